@@ -1,0 +1,789 @@
+"""Two-dimensional limit-equilibrium slope stability (method of slices).
+
+Pure Python + numpy: this module does not need YADE and can be imported both
+from plain Python (tests, post-processing) and from inside a yade script.
+
+It is used to put a classical limit-equilibrium factor of safety next to the
+RBSM one, as in Table 2 of the seed paper (Yagi & Takeuchi, "Application of an
+explicit dynamic method for discontinuous analysis by using rigid
+bodies-spring model"), which lists shear force, normal force and factor of
+safety along the slip surface for RBSM and for Fellenius.
+
+Units and conventions
+---------------------
+* lengths in m, unit weights ``gamma`` in kN/m^3, cohesion ``c`` and pore
+  pressure ``u`` in kPa (= kN/m^2); all forces are therefore kN per metre of
+  slope width (kN/m).  Any consistent unit set works (e.g. N, Pa, N/m^3) as
+  long as ``gamma_w`` is given in the same set.
+* angles are in degrees at the API (``phi``), radians internally.
+* ``x`` is horizontal, ``y`` is vertical upwards (gravity acts in -y).
+* the slope may face left or right; the direction of sliding is detected
+  from the sign of the driving moment/force, so reported driving forces and
+  factors of safety are always positive.
+
+Slope description
+-----------------
+:class:`Slope` holds
+
+* ``surface`` - ground surface polyline ``[(x0, y0), (x1, y1), ...]`` with
+  strictly increasing ``x``; the model domain is ``x0 <= x <= xn``.
+* ``layers`` - list of :class:`Layer` ordered **from the top down**.  Layer
+  ``i`` occupies the material between its ``top`` polyline and the ``top`` of
+  layer ``i+1`` (the last layer extends downwards without limit).  The first
+  layer's ``top`` may be ``None``, meaning "the ground surface".  A top
+  polyline is evaluated with constant extrapolation outside its x range and
+  is clipped to the ground surface, so a boundary that "outcrops" simply
+  ends there.
+* pore pressure (optional, default dry): either a phreatic line
+  ``phreatic`` (polyline; ``u = gamma_w * max(0, y_w(x) - y_base)``, the usual
+  vertical-head approximation), or a pore-pressure ratio ``ru``
+  (``u = ru * W / b``, Bishop & Morgenstern), not both.
+
+Methods
+-------
+For each slice of width ``b``, base inclination ``alpha`` (positive when
+the base rises in the direction opposite to sliding, i.e. when the weight
+drives the slide), weight ``W``, base length ``l = b / cos(alpha)``, base
+pore pressure ``u`` and base strength ``c, phi`` (layer at the middle of the
+slice base):
+
+* Fellenius / ordinary method of slices (circle or polyline, force form)::
+
+      N' = W cos(alpha) - u l        (effective normal force on the base)
+      T  = W sin(alpha)              (driving shear force)
+      FS = sum(c l + N' tan(phi)) / sum(T)
+
+  For a circle this is identical to the moment form (the radius cancels).
+  The totals ``sum N'`` and ``sum T`` are returned (``normal``/``shear``).
+  ``N'`` is **not** clipped at zero (textbook form), see ``Result.notes``.
+* Bishop simplified (circle only)::
+
+      FS = sum[(c b + (W - u b) tan(phi)) / m_alpha] / sum(W sin(alpha)),
+      m_alpha = cos(alpha) + sin(alpha) tan(phi) / FS
+
+  solved by fixed-point iteration starting from the Fellenius value until
+  ``|FS_k+1 - FS_k| <= tol * FS_k+1`` (default ``tol = 1e-6``, at most
+  ``max_iter = 200`` iterations).  ``ValueError`` is raised when
+  ``m_alpha <= 0.2`` for any slice at any iterate (numerical trouble at
+  the toe of steep exit circles, the usual ``m_alpha`` limit, configurable
+  with ``m_alpha_min``) or when the iteration does not converge.
+
+Critical-circle search
+----------------------
+:func:`critical_circle` evaluates a deterministic rectangular grid of
+centres (``nx`` x ``ny`` points spanning ``x_range`` x ``y_range``) and, for
+each centre, ``nr`` radii equally spaced in ``r_range`` - or, if ``through``
+is given (e.g. the toe), the single radius of the circle through that
+point.  Circles that are invalid for the slope (they miss it, leave the model
+domain, cut the ground more than twice, or hit ``m_alpha`` trouble) are
+skipped and counted.  The minimum-FS circle (first one found in the
+enumeration order on ties) is returned.  An optional ``refine`` number of
+successive grid refinements around the best centre (each halving the grid
+spacing) can be asked for; it is also deterministic.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Iterable, List, Optional, Sequence, Tuple
+
+import numpy as np
+
+__all__ = [
+    "Layer",
+    "Slope",
+    "Circle",
+    "Slices",
+    "Result",
+    "SearchResult",
+    "fellenius_circle",
+    "bishop_circle",
+    "fellenius_polyline",
+    "circle_slices",
+    "polyline_slices",
+    "critical_circle",
+    "results_table",
+    "GAMMA_W",
+]
+
+#: unit weight of water, kN/m^3
+GAMMA_W = 9.81
+
+_REL_TOL = 1e-9  # relative geometric tolerance (scaled by the model size)
+
+
+# --------------------------------------------------------------------------
+# validation helpers
+# --------------------------------------------------------------------------
+def _finite(name: str, value) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a real number, got {value!r}") from None
+    if not math.isfinite(v):
+        raise ValueError(f"{name} must be finite, got {v!r}")
+    return v
+
+
+def _polyline(name: str, pts, min_points: int = 2) -> np.ndarray:
+    try:
+        a = np.asarray(pts, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a sequence of (x, y) points") from None
+    if a.ndim != 2 or a.shape[1] != 2:
+        raise ValueError(f"{name} must be a sequence of (x, y) points, got shape {a.shape}")
+    if a.shape[0] < min_points:
+        raise ValueError(f"{name} needs at least {min_points} points, got {a.shape[0]}")
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"{name} contains non-finite coordinates")
+    dx = np.diff(a[:, 0])
+    if np.any(dx <= 0.0):
+        i = int(np.argmax(dx <= 0.0))
+        raise ValueError(
+            f"{name} x coordinates must be strictly increasing (left to right); "
+            f"point {i + 1} (x={a[i + 1, 0]}) does not follow point {i} (x={a[i, 0]})"
+        )
+    return a
+
+
+def _interp(poly: np.ndarray, x):
+    """Piecewise-linear evaluation with constant extrapolation."""
+    return np.interp(x, poly[:, 0], poly[:, 1])
+
+
+# --------------------------------------------------------------------------
+# slope description
+# --------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Layer:
+    """A soil layer (Mohr-Coulomb strength, unit weight).
+
+    ``c`` cohesion [kPa] >= 0, ``phi`` friction angle [deg] in [0, 90),
+    ``gamma`` unit weight [kN/m^3] >= 0, ``top`` polyline of the layer's top
+    boundary (``None`` = the ground surface; only allowed for the first
+    layer).
+    """
+
+    c: float
+    phi: float
+    gamma: float
+    top: Optional[Sequence[Tuple[float, float]]] = None
+    name: str = ""
+
+    def __post_init__(self):
+        label = f"layer {self.name!r}" if self.name else "layer"
+        c = _finite(f"{label}: cohesion c", self.c)
+        phi = _finite(f"{label}: friction angle phi", self.phi)
+        gamma = _finite(f"{label}: unit weight gamma", self.gamma)
+        if c < 0.0:
+            raise ValueError(f"{label}: cohesion c must be >= 0, got {c}")
+        if not (0.0 <= phi < 90.0):
+            raise ValueError(f"{label}: friction angle phi must be in [0, 90) degrees, got {phi}")
+        if gamma < 0.0:
+            raise ValueError(f"{label}: unit weight gamma must be >= 0, got {gamma}")
+        object.__setattr__(self, "c", c)
+        object.__setattr__(self, "phi", phi)
+        object.__setattr__(self, "gamma", gamma)
+        if self.top is not None:
+            object.__setattr__(self, "top", _polyline(f"{label}: top boundary", self.top))
+
+    @property
+    def tan_phi(self) -> float:
+        return math.tan(math.radians(self.phi))
+
+
+class Slope:
+    """Ground surface + layers + optional pore pressure; see module docstring.
+
+    Parameters
+    ----------
+    surface : sequence of (x, y)
+        ground surface, strictly increasing x.
+    layers : Layer or sequence of Layer
+        ordered from the top down; the first may have ``top=None``.
+    phreatic : sequence of (x, y), optional
+        phreatic line (strictly increasing x); pore pressure at a point
+        below it is ``gamma_w`` times the vertical distance to it.
+    ru : float, optional
+        pore-pressure ratio in [0, 1); ``u = ru * W / b``.
+    gamma_w : float
+        unit weight of water, default 9.81 kN/m^3.
+    """
+
+    def __init__(self, surface, layers, phreatic=None, ru: float = 0.0, gamma_w: float = GAMMA_W):
+        self.surface = _polyline("ground surface", surface)
+        if isinstance(layers, Layer):
+            layers = [layers]
+        layers = list(layers)
+        if not layers:
+            raise ValueError("at least one layer is needed")
+        for i, L in enumerate(layers):
+            if not isinstance(L, Layer):
+                raise ValueError(f"layers[{i}] is not a Layer")
+            if L.top is None and i > 0:
+                raise ValueError(f"layers[{i}]: only the first layer may have top=None (ground surface)")
+        self.layers: List[Layer] = layers
+        self.ru = _finite("ru", ru)
+        if not (0.0 <= self.ru < 1.0):
+            raise ValueError(f"ru must be in [0, 1), got {self.ru}")
+        self.gamma_w = _finite("gamma_w", gamma_w)
+        if self.gamma_w < 0.0:
+            raise ValueError(f"gamma_w must be >= 0, got {self.gamma_w}")
+        self.phreatic = None if phreatic is None else _polyline("phreatic line", phreatic)
+        if self.phreatic is not None and self.ru != 0.0:
+            raise ValueError("give either a phreatic line or ru, not both")
+        x = self.surface[:, 0]
+        y = self.surface[:, 1]
+        self.xmin, self.xmax = float(x[0]), float(x[-1])
+        self._scale = max(float(np.ptp(x)), float(np.ptp(y)), 1.0)
+        self.tol = _REL_TOL * self._scale
+
+    # -- geometry queries ---------------------------------------------------
+    def ground(self, x):
+        """Ground surface elevation at x (constant beyond the ends)."""
+        return _interp(self.surface, x)
+
+    def boundaries(self, x: float) -> List[float]:
+        """Effective elevations ``e_i`` of the top of each layer at x.
+
+        ``e_0`` is the ground; ``e_i = min(e_(i-1), top_i(x))`` so that the
+        layers never overlap and never rise above the ground.  Layer ``i``
+        occupies ``[e_(i+1), e_i]`` (the last one extends to -infinity);
+        material between the ground and the first layer's top polyline (if
+        it has one) belongs to the first layer.
+        """
+        e = [float(self.ground(x))]
+        for L in self.layers[1:]:
+            e.append(min(e[-1], float(_interp(L.top, x))))
+        return e
+
+    def layer_at(self, x: float, y: float) -> Layer:
+        """Layer containing point (x, y): the deepest layer whose effective
+        top is at or above y (a point above the ground: the first layer)."""
+        chosen = self.layers[0]
+        for L, t in zip(self.layers, self.boundaries(x)):
+            if y <= t + self.tol:
+                chosen = L
+        return chosen
+
+    def column_weight(self, x: float, y_base: float, b: float) -> float:
+        """Weight of a vertical column of width ``b`` between ``y_base`` and
+        the ground at abscissa ``x``, with the layer unit weights.  This is
+        exact for a slice whose top, base and layer boundaries are straight
+        across its width (midpoint rule on a trapezoid)."""
+        e = self.boundaries(x) + [-math.inf]
+        w = 0.0
+        for i, L in enumerate(self.layers):
+            w += L.gamma * max(0.0, e[i] - max(e[i + 1], y_base))
+        return w * b
+
+    def pore_pressure(self, x: float, y_base: float, w_slice: float, b: float) -> float:
+        if self.phreatic is not None:
+            return self.gamma_w * max(0.0, float(_interp(self.phreatic, x)) - y_base)
+        if self.ru > 0.0:
+            return self.ru * w_slice / b
+        return 0.0
+
+
+# --------------------------------------------------------------------------
+# slip surfaces and slices
+# --------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Circle:
+    """Circular slip surface: centre (xc, yc) [m] and radius R [m]."""
+
+    xc: float
+    yc: float
+    R: float
+
+    def __post_init__(self):
+        for n in ("xc", "yc", "R"):
+            object.__setattr__(self, n, _finite(f"circle {n}", getattr(self, n)))
+        if self.R <= 0.0:
+            raise ValueError(f"circle radius R must be > 0, got {self.R}")
+
+    def lower(self, x):
+        """Elevation of the lower half of the circle at x (NaN outside)."""
+        d = self.R ** 2 - (np.asarray(x, dtype=float) - self.xc) ** 2
+        with np.errstate(invalid="ignore"):
+            return self.yc - np.sqrt(d)
+
+    def __str__(self):
+        return f"circle(xc={self.xc:.3f}, yc={self.yc:.3f}, R={self.R:.3f})"
+
+
+@dataclass
+class Slices:
+    """Per-slice data (numpy arrays, one entry per slice).
+
+    ``x`` slice mid abscissa, ``b`` width, ``alpha`` base angle [rad] (sign:
+    positive = driving), ``W`` weight, ``l`` base length, ``u`` base pore
+    pressure, ``c``/``tan_phi`` base strength, ``y_base`` base mid elevation.
+    """
+
+    x: np.ndarray
+    b: np.ndarray
+    alpha: np.ndarray
+    W: np.ndarray
+    l: np.ndarray
+    u: np.ndarray
+    c: np.ndarray
+    tan_phi: np.ndarray
+    y_base: np.ndarray
+    x_entry: float
+    x_exit: float
+    direction: int  # -1: mass slides towards -x, +1: towards +x
+
+    @property
+    def n(self) -> int:
+        return int(self.x.size)
+
+
+def _check_n(n) -> int:
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)):
+        raise ValueError(f"number of slices must be an integer, got {n!r}")
+    if n < 1:
+        raise ValueError(f"number of slices must be >= 1, got {n}")
+    return int(n)
+
+
+def _segment_circle_roots(p0, p1, circle: Circle) -> List[float]:
+    """x of intersections of segment p0-p1 with the *lower* half circle."""
+    (x0, y0), (x1, y1) = p0, p1
+    dx, dy = x1 - x0, y1 - y0
+    fx, fy = x0 - circle.xc, y0 - circle.yc
+    a = dx * dx + dy * dy
+    bq = 2.0 * (fx * dx + fy * dy)
+    cq = fx * fx + fy * fy - circle.R ** 2
+    disc = bq * bq - 4.0 * a * cq
+    if disc < 0.0:
+        return []
+    s = math.sqrt(disc)
+    out = []
+    for t in ((-bq - s) / (2 * a), (-bq + s) / (2 * a)):
+        if -1e-12 <= t <= 1.0 + 1e-12:
+            x = x0 + t * dx
+            y = y0 + t * dy
+            if y <= circle.yc + 1e-12 * max(1.0, abs(circle.yc)):
+                out.append(x)
+    return out
+
+
+def _positive_interval(xs: List[float], f, lo: float, hi: float, tol: float, what: str):
+    """Given candidate crossing abscissae of a difference function ``f``
+    (ground minus slip surface) on [lo, hi], return the unique interval on
+    which f > 0.  Raises ValueError if there is none or several."""
+    pts = sorted(set([lo, hi] + [x for x in xs if lo - tol <= x <= hi + tol]))
+    merged = [pts[0]]
+    for p in pts[1:]:
+        if p - merged[-1] > tol:
+            merged.append(p)
+        else:
+            merged[-1] = max(merged[-1], min(p, hi))
+    pts = [min(max(p, lo), hi) for p in merged]
+    intervals = []
+    for a, b in zip(pts[:-1], pts[1:]):
+        if b - a <= tol:
+            continue
+        if f(0.5 * (a + b)) > tol:
+            if intervals and abs(intervals[-1][1] - a) <= tol:
+                intervals[-1] = (intervals[-1][0], b)  # tangent touch: join
+            else:
+                intervals.append((a, b))
+    if not intervals:
+        raise ValueError(f"the {what} misses the slope (it does not pass below the ground surface)")
+    if len(intervals) > 1:
+        raise ValueError(
+            f"the {what} cuts the ground surface more than twice "
+            f"({len(intervals)} separate sliding masses at x = "
+            + ", ".join(f"[{a:.3f}, {b:.3f}]" for a, b in intervals)
+            + ")"
+        )
+    return intervals[0]
+
+
+def _finish_slices(slope: Slope, xm, b, ybase, alpha_geom, x_entry, x_exit, what) -> Slices:
+    """Compute weights, strengths, pore pressures; fix the sliding sense."""
+    n = xm.size
+    W = np.empty(n)
+    u = np.empty(n)
+    c = np.empty(n)
+    tphi = np.empty(n)
+    for i in range(n):
+        W[i] = slope.column_weight(float(xm[i]), float(ybase[i]), float(b[i]))
+        u[i] = slope.pore_pressure(float(xm[i]), float(ybase[i]), W[i], float(b[i]))
+        L = slope.layer_at(float(xm[i]), float(ybase[i]))
+        c[i] = L.c
+        tphi[i] = L.tan_phi
+    # alpha_geom: angle of the base rising towards +x.  A mass sliding
+    # towards -x is driven by bases rising towards +x.
+    drive = float(np.sum(W * np.sin(alpha_geom)))
+    if abs(drive) <= 1e-12 * max(1.0, float(np.sum(W))):
+        raise ValueError(f"the {what} has no driving force (sum W sin(alpha) = 0): no sliding direction")
+    direction = -1 if drive > 0 else +1
+    alpha = alpha_geom if direction == -1 else -alpha_geom
+    l = b / np.cos(alpha)
+    return Slices(xm, b, alpha, W, l, u, c, tphi, ybase, float(x_entry), float(x_exit), direction)
+
+
+def circle_slices(slope: Slope, circle: Circle, n: int = 50) -> Slices:
+    """Cut the mass above ``circle`` into ``n`` equal-width vertical slices.
+
+    Raises ValueError if the circle misses the slope, leaves the x range of
+    the ground surface while still below it, or cuts the ground more than
+    twice.
+    """
+    n = _check_n(n)
+    if not isinstance(circle, Circle):
+        circle = Circle(*circle)
+    tol = slope.tol
+    g = slope.surface
+    # ground above the circle at the circle's horizontal extremes would mean
+    # the slip surface does not come back up through the ground
+    lo = max(slope.xmin, circle.xc - circle.R)
+    hi = min(slope.xmax, circle.xc + circle.R)
+    if hi - lo <= tol:
+        raise ValueError(f"{circle} misses the slope (no horizontal overlap with the ground surface)")
+    roots: List[float] = []
+    for k in range(len(g) - 1):
+        roots += _segment_circle_roots(g[k], g[k + 1], circle)
+
+    def f(x):
+        return float(slope.ground(x) - circle.lower(x))
+
+    x_entry, x_exit = _positive_interval(roots, f, lo, hi, tol, f"slip {circle}")
+    for xe in (x_entry, x_exit):
+        if f(xe) > 10 * tol + 1e-9 * circle.R:
+            if abs(xe - slope.xmin) <= tol or abs(xe - slope.xmax) <= tol:
+                raise ValueError(
+                    f"{circle} leaves the ground-surface x range [{slope.xmin}, {slope.xmax}] "
+                    f"below the ground (at x = {xe:.3f}): extend the ground surface"
+                )
+            raise ValueError(
+                f"{circle} does not exit the ground surface twice "
+                f"(at x = {xe:.3f} the ground is above the circle's lowest half)"
+            )
+    edges = np.linspace(x_entry, x_exit, n + 1)
+    xm = 0.5 * (edges[:-1] + edges[1:])
+    b = np.diff(edges)
+    ybase = circle.lower(xm)
+    s = np.clip((xm - circle.xc) / circle.R, -1.0, 1.0)
+    alpha_geom = np.arcsin(s)  # base rising towards +x when x > xc
+    return _finish_slices(slope, xm, b, ybase, alpha_geom, x_entry, x_exit, f"slip {circle}")
+
+
+def polyline_slices(slope: Slope, surface, n: int = 50) -> Slices:
+    """Slices for a polyline slip surface (strictly increasing x).
+
+    The slip polyline must pass below the ground surface on exactly one
+    interval; it is clipped to that interval (so its end points may lie on
+    or above the ground).  Slice boundaries are placed at every vertex of the
+    ground surface, the slip surface and the layer boundaries inside the
+    interval, and the pieces are subdivided so that there are at least ``n``
+    slices; each slice therefore has a straight base and a straight top.
+    """
+    n = _check_n(n)
+    s = _polyline("slip surface", surface)
+    tol = slope.tol
+    lo = max(slope.xmin, float(s[0, 0]))
+    hi = min(slope.xmax, float(s[-1, 0]))
+    if hi - lo <= tol:
+        raise ValueError("the slip surface misses the slope (no horizontal overlap with the ground surface)")
+    # the difference ground - slip is piecewise linear between the union of
+    # vertices: its roots are found exactly on each piece
+    xs = np.unique(np.concatenate([slope.surface[:, 0], s[:, 0], [lo, hi]]))
+    xs = xs[(xs >= lo) & (xs <= hi)]
+    d = slope.ground(xs) - _interp(s, xs)
+    roots = []
+    for k in range(len(xs) - 1):
+        if (d[k] > 0) != (d[k + 1] > 0) and d[k] != d[k + 1]:
+            roots.append(float(xs[k] - d[k] * (xs[k + 1] - xs[k]) / (d[k + 1] - d[k])))
+        if abs(d[k]) <= tol:
+            roots.append(float(xs[k]))
+
+    def f(x):
+        return float(slope.ground(x) - _interp(s, x))
+
+    x_entry, x_exit = _positive_interval(roots, f, lo, hi, tol, "slip surface")
+    for xe in (x_entry, x_exit):
+        if f(xe) > 10 * tol:
+            raise ValueError(
+                f"the slip surface does not reach the ground surface at x = {xe:.3f} "
+                f"(it ends, or the ground surface ends, {f(xe):.3f} m below ground)"
+            )
+    brk = [slope.surface[:, 0], s[:, 0]]
+    for L in slope.layers:
+        if L.top is not None:
+            brk.append(L.top[:, 0])
+    if slope.phreatic is not None:
+        brk.append(slope.phreatic[:, 0])
+    bx = np.unique(np.concatenate(brk + [[x_entry, x_exit]]))
+    bx = bx[(bx >= x_entry) & (bx <= x_exit)]
+    # merge breakpoints closer than tol
+    keep = [bx[0]]
+    for v in bx[1:]:
+        if v - keep[-1] > tol:
+            keep.append(v)
+    keep[-1] = x_exit
+    bx = np.asarray(keep)
+    total = x_exit - x_entry
+    target = total / n
+    edges = [bx[0]]
+    for a, b in zip(bx[:-1], bx[1:]):
+        m = max(1, int(math.ceil((b - a) / target - 1e-9)))
+        edges.extend(list(np.linspace(a, b, m + 1)[1:]))
+    edges = np.asarray(edges)
+    xm = 0.5 * (edges[:-1] + edges[1:])
+    b = np.diff(edges)
+    ybase = _interp(s, xm)
+    # base slope of the segment containing each slice mid point
+    seg = np.clip(np.searchsorted(s[:, 0], xm) - 1, 0, len(s) - 2)
+    alpha_geom = np.arctan2(s[seg + 1, 1] - s[seg, 1], s[seg + 1, 0] - s[seg, 0])
+    return _finish_slices(slope, xm, b, ybase, alpha_geom, x_entry, x_exit, "slip surface")
+
+
+# --------------------------------------------------------------------------
+# results
+# --------------------------------------------------------------------------
+@dataclass
+class Result:
+    """Outcome of one factor-of-safety evaluation.
+
+    ``fs`` factor of safety; ``normal`` = sum of effective base normal
+    forces N' [kN/m] (Fellenius N' = W cos(alpha) - u l; for Bishop the
+    N' implied by the simplified method at convergence); ``shear`` = sum of
+    driving shear forces T = W sin(alpha) [kN/m]; ``resisting`` = sum of
+    available shear strength along the base [kN/m] (so fs = resisting /
+    shear); ``n_slices``; ``surface`` the Circle or the slip polyline;
+    ``iterations`` (0 for Fellenius); ``slices`` per-slice data.
+    """
+
+    method: str
+    fs: float
+    normal: float
+    shear: float
+    resisting: float
+    n_slices: int
+    surface: object
+    iterations: int = 0
+    slices: Optional[Slices] = field(default=None, repr=False)
+    notes: str = ""
+
+    def row(self) -> str:
+        return f"{self.method:<28s} {self.shear:12.1f} {self.normal:12.1f} {self.fs:8.3f}"
+
+    def __str__(self):
+        surf = self.surface if isinstance(self.surface, Circle) else "polyline"
+        it = f", {self.iterations} iterations" if self.iterations else ""
+        return (
+            f"{self.method}: FS = {self.fs:.3f} (shear {self.shear:.1f} kN/m, "
+            f"normal {self.normal:.1f} kN/m, {self.n_slices} slices, {surf}{it})"
+        )
+
+
+def results_table(rows: Iterable[Tuple[str, float, float, float]] | Iterable[Result], title: str = "") -> str:
+    """Format a table like Table 2 of the seed paper.
+
+    ``rows`` holds :class:`Result` objects and/or tuples
+    ``(label, shear_kN_per_m, normal_kN_per_m, fs)``.
+    """
+    head = f"{'':<28s} {'Shear (kN/m)':>12s} {'Normal (kN/m)':>13s} {'FS':>8s}"
+    lines = [title] if title else []
+    lines += [head, "-" * len(head)]
+    for r in rows:
+        if isinstance(r, Result):
+            lab, sh, no, fs = r.method, r.shear, r.normal, r.fs
+        else:
+            lab, sh, no, fs = r
+        lines.append(f"{lab:<28s} {sh:12.1f} {no:13.1f} {fs:8.3f}")
+    return "\n".join(lines)
+
+
+def _fellenius(sl: Slices, method: str, surface) -> Result:
+    Np = sl.W * np.cos(sl.alpha) - sl.u * sl.l
+    T = sl.W * np.sin(sl.alpha)
+    res = float(np.sum(sl.c * sl.l + Np * sl.tan_phi))
+    drive = float(np.sum(T))
+    notes = ""
+    if np.any(Np < 0):
+        notes = f"{int(np.sum(Np < 0))} slice(s) with negative effective normal force (not clipped)"
+    return Result(method, res / drive, float(np.sum(Np)), drive, res, sl.n, surface, 0, sl, notes)
+
+
+def fellenius_circle(slope: Slope, circle, n: int = 50) -> Result:
+    """Ordinary method of slices (Fellenius) for a circular slip surface.
+
+    ``circle`` is a :class:`Circle` or a tuple ``(xc, yc, R)``.
+    """
+    if not isinstance(circle, Circle):
+        circle = Circle(*circle)
+    return _fellenius(circle_slices(slope, circle, n), "Fellenius (circle)", circle)
+
+
+def fellenius_polyline(slope: Slope, surface, n: int = 50) -> Result:
+    """Ordinary method of slices, force form, for a polyline slip surface
+    (e.g. an RBSM slip path along block joints): FS = sum(c l + N' tan phi)
+    / sum(T), N' = W cos(alpha) - u l, T = W sin(alpha)."""
+    sl = polyline_slices(slope, surface, n)
+    return _fellenius(sl, "Fellenius (polyline)", np.asarray(surface, dtype=float))
+
+
+def bishop_circle(
+    slope: Slope,
+    circle,
+    n: int = 50,
+    tol: float = 1e-6,
+    max_iter: int = 200,
+    m_alpha_min: float = 0.2,
+) -> Result:
+    """Bishop simplified method for a circular slip surface.
+
+    Fixed-point iteration from the Fellenius value; converged when
+    ``|F_new - F| <= tol * F_new``.  Raises ValueError if any
+    ``m_alpha = cos(alpha) + sin(alpha) tan(phi) / F`` drops to
+    ``m_alpha_min`` or below, or if ``max_iter`` is reached.
+    """
+    if not isinstance(circle, Circle):
+        circle = Circle(*circle)
+    tol = _finite("tol", tol)
+    if tol <= 0:
+        raise ValueError(f"tol must be > 0, got {tol}")
+    sl = circle_slices(slope, circle, n)
+    f0 = _fellenius(sl, "", circle)
+    F = f0.fs
+    if not (F > 0):
+        F = 1.0
+    ca, sa = np.cos(sl.alpha), np.sin(sl.alpha)
+    num0 = sl.c * sl.b + (sl.W - sl.u * sl.b) * sl.tan_phi
+    drive = float(np.sum(sl.W * sa))
+    it = 0
+    while True:
+        it += 1
+        m = ca + sa * sl.tan_phi / F
+        if np.any(m <= m_alpha_min):
+            k = int(np.argmin(m))
+            raise ValueError(
+                f"Bishop: m_alpha = {m[k]:.3f} <= {m_alpha_min} at slice {k} "
+                f"(x = {sl.x[k]:.3f}, alpha = {math.degrees(sl.alpha[k]):.1f} deg) for {circle}"
+            )
+        F_new = float(np.sum(num0 / m)) / drive
+        if not math.isfinite(F_new) or F_new <= 0:
+            raise ValueError(f"Bishop iteration failed (F = {F_new}) for {circle}")
+        if abs(F_new - F) <= tol * F_new:
+            F = F_new
+            break
+        F = F_new
+        if it >= max_iter:
+            raise ValueError(f"Bishop iteration did not converge in {max_iter} iterations for {circle}")
+    m = ca + sa * sl.tan_phi / F
+    # base normal force implied by vertical equilibrium of each slice
+    Np = (sl.W - sl.c * sl.l * sa / F - sl.u * sl.l * ca) / m
+    res = F * drive
+    return Result("Bishop simplified (circle)", F, float(np.sum(Np)), drive, res, sl.n, circle, it, sl)
+
+
+# --------------------------------------------------------------------------
+# critical circle search
+# --------------------------------------------------------------------------
+@dataclass
+class SearchResult:
+    """Minimum-FS circle of a grid search."""
+
+    method: str
+    best: Result
+    circle: Circle
+    n_tried: int
+    n_valid: int
+    n_skipped: int
+
+    @property
+    def fs(self) -> float:
+        return self.best.fs
+
+    def __str__(self):
+        return (
+            f"critical circle ({self.method}): FS = {self.best.fs:.3f} at {self.circle}; "
+            f"{self.n_valid} of {self.n_tried} trial circles valid"
+        )
+
+
+def _lin(rng, k, name):
+    if len(rng) != 2:
+        raise ValueError(f"{name} must be a (min, max) pair")
+    a, b = _finite(f"{name}[0]", rng[0]), _finite(f"{name}[1]", rng[1])
+    if b < a:
+        raise ValueError(f"{name} must satisfy min <= max, got {rng}")
+    k = _check_n(k)
+    return np.linspace(a, b, k) if k > 1 else np.array([0.5 * (a + b)])
+
+
+def critical_circle(
+    slope: Slope,
+    x_range,
+    y_range,
+    nx: int = 11,
+    ny: int = 11,
+    r_range=None,
+    nr: int = 11,
+    through=None,
+    method: str = "bishop",
+    n: int = 50,
+    refine: int = 0,
+) -> SearchResult:
+    """Grid search for the circle of minimum FS.
+
+    Centres: ``nx`` x ``ny`` grid on ``x_range`` x ``y_range`` (inclusive).
+    Radii: either ``nr`` values on ``r_range`` (inclusive), or - when
+    ``through=(x, y)`` is given - the one radius of the circle through that
+    point (e.g. the toe).  ``method`` is ``"fellenius"`` or ``"bishop"``.
+    ``refine`` extra passes re-grid around the best centre with half the
+    previous spacing (same nx, ny).  Invalid circles are skipped.
+    Raises ValueError if no trial circle is valid.
+    """
+    meth = method.lower()
+    if meth not in ("fellenius", "bishop"):
+        raise ValueError(f"method must be 'fellenius' or 'bishop', got {method!r}")
+    fn = fellenius_circle if meth == "fellenius" else bishop_circle
+    if (r_range is None) == (through is None):
+        raise ValueError("give exactly one of r_range or through")
+    if through is not None:
+        tx, ty = _finite("through x", through[0]), _finite("through y", through[1])
+    else:
+        radii = _lin(r_range, nr, "r_range")
+        if radii[0] <= 0:
+            raise ValueError("radii must be > 0")
+    refine = int(refine)
+    xs = _lin(x_range, nx, "x_range")
+    ys = _lin(y_range, ny, "y_range")
+    best = None
+    tried = valid = 0
+    for level in range(refine + 1):
+        for xc in xs:
+            for yc in ys:
+                rs = [math.hypot(xc - tx, yc - ty)] if through is not None else radii
+                for R in rs:
+                    tried += 1
+                    if R <= 0:
+                        continue
+                    try:
+                        r = fn(slope, Circle(xc, yc, R), n)
+                    except ValueError:
+                        continue
+                    if not (r.fs > 0 and math.isfinite(r.fs)):
+                        continue
+                    valid += 1
+                    if best is None or r.fs < best.fs:
+                        best = r
+        if best is None:
+            break
+        if level < refine:
+            dx = (xs[-1] - xs[0]) / max(len(xs) - 1, 1) / 2 if len(xs) > 1 else 0.0
+            dy = (ys[-1] - ys[0]) / max(len(ys) - 1, 1) / 2 if len(ys) > 1 else 0.0
+            cx, cy = best.surface.xc, best.surface.yc
+            hx, hy = dx * (len(xs) - 1) / 2, dy * (len(ys) - 1) / 2
+            xs = np.linspace(cx - hx, cx + hx, len(xs))
+            ys = np.linspace(cy - hy, cy + hy, len(ys))
+    if best is None:
+        raise ValueError(f"no valid trial circle in the search space ({tried} tried)")
+    return SearchResult(meth, best, best.surface, tried, valid, tried - valid)
