@@ -1,0 +1,110 @@
+#include <pkg/rbsm/kernel/CriticalTimeStep.hpp>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+namespace rbsm {
+
+namespace {
+	using Mat3 = Eigen::Matrix3d;
+	using Row6 = Eigen::Matrix<Real, 1, 6>;
+
+	void check(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts)
+	{
+		for (const auto& b : bodies)
+			if (!b.fixed && !(b.mass > 0 && b.inertia > 0)) throw std::invalid_argument("criticalTimeStep: free body needs mass > 0 and inertia > 0");
+		for (const auto& c : contacts) {
+			if (c.body1 < 0 || c.body2 < 0 || c.body1 >= int(bodies.size()) || c.body2 >= int(bodies.size()) || c.body1 == c.body2)
+				throw std::invalid_argument("criticalTimeStep: bad body index in a contact");
+			if (c.points.size() != c.areas.size()) throw std::invalid_argument("criticalTimeStep: points and areas differ in size");
+			if (c.kn < 0 || c.ks < 0) throw std::invalid_argument("criticalTimeStep: negative stiffness");
+		}
+	}
+
+	// Visits the 6x6 stiffness of each contact (DOFs of body1 then body2).
+	template <class F> void forEachContactStiffness(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts, F&& f)
+	{
+		for (const auto& c : contacts) {
+			Eigen::Matrix<Real, 6, 6> K = Eigen::Matrix<Real, 6, 6>::Zero();
+			const Vec2&               c1 = bodies[c.body1].centroid;
+			const Vec2&               c2 = bodies[c.body2].centroid;
+			for (size_t k = 0; k < c.points.size(); ++k) {
+				const Vec2 r1 = c.points[k] - c1, r2 = c.points[k] - c2;
+				for (int dir = 0; dir < 2; ++dir) {
+					const Vec2& d   = dir == 0 ? c.normal : c.tangent;
+					const Real  kk  = (dir == 0 ? c.kn : c.ks) * c.areas[k];
+					Row6        B;
+					B << -d.x(), -d.y(), -cross2(r1, d), d.x(), d.y(), cross2(r2, d);
+					K.noalias() += kk * B.transpose() * B;
+				}
+			}
+			f(c, K);
+		}
+	}
+} // namespace
+
+Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts)
+{
+	check(bodies, contacts);
+	const size_t                           n = bodies.size();
+	std::vector<Mat3>                      diag(n, Mat3::Zero());
+	std::map<std::pair<int, int>, Mat3>    off; // (i<j) -> K_ij block
+	forEachContactStiffness(bodies, contacts, [&](const DynContact& c, const Eigen::Matrix<Real, 6, 6>& K) {
+		diag[c.body1] += K.block<3, 3>(0, 0);
+		diag[c.body2] += K.block<3, 3>(3, 3);
+		if (c.body1 < c.body2) off[{ c.body1, c.body2 }] += K.block<3, 3>(0, 3);
+		else off[{ c.body2, c.body1 }] += K.block<3, 3>(3, 0);
+	});
+	auto massOf = [&](size_t b, int i) { return i < 2 ? bodies[b].mass : bodies[b].inertia; };
+	// Row sums of |S| = |K_ij| / sqrt(M_i M_j), rows of free bodies only (fixed DOFs removed).
+	std::vector<Eigen::Vector3d> row(n, Eigen::Vector3d::Zero());
+	for (size_t b = 0; b < n; ++b) {
+		if (bodies[b].fixed) continue;
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j) row[b][i] += std::abs(diag[b](i, j)) / std::sqrt(massOf(b, i) * massOf(b, j));
+	}
+	for (const auto& kv : off) {
+		const int a = kv.first.first, b = kv.first.second;
+		if (bodies[a].fixed || bodies[b].fixed) continue;
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j) {
+				const Real s = std::abs(kv.second(i, j)) / std::sqrt(massOf(a, i) * massOf(b, j));
+				row[a][i] += s; // S_ab(i,j) in row i of a
+				row[b][j] += s; // symmetric entry S_ba(j,i) in row j of b
+			}
+	}
+	Real lmax = 0;
+	for (size_t b = 0; b < n; ++b)
+		if (!bodies[b].fixed) lmax = std::max(lmax, row[b].maxCoeff());
+	return lmax > 0 ? 2 / std::sqrt(lmax) : std::numeric_limits<Real>::infinity();
+}
+
+Real criticalTimeStepExact(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts)
+{
+	check(bodies, contacts);
+	std::vector<int> dof(bodies.size(), -1);
+	int              nf = 0;
+	for (size_t b = 0; b < bodies.size(); ++b)
+		if (!bodies[b].fixed) dof[b] = 3 * nf++;
+	if (nf == 0) return std::numeric_limits<Real>::infinity();
+	Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * nf, 3 * nf);
+	forEachContactStiffness(bodies, contacts, [&](const DynContact& c, const Eigen::Matrix<Real, 6, 6>& Kc) {
+		const int d[2] = { dof[c.body1], dof[c.body2] };
+		for (int I = 0; I < 2; ++I)
+			for (int J = 0; J < 2; ++J)
+				if (d[I] >= 0 && d[J] >= 0) K.block<3, 3>(d[I], d[J]) += Kc.block<3, 3>(3 * I, 3 * J);
+	});
+	Eigen::VectorXd isq(3 * nf);
+	for (size_t b = 0; b < bodies.size(); ++b)
+		if (dof[b] >= 0) isq.segment<3>(dof[b]) << 1 / std::sqrt(bodies[b].mass), 1 / std::sqrt(bodies[b].mass), 1 / std::sqrt(bodies[b].inertia);
+	const Eigen::MatrixXd                          S = isq.asDiagonal() * K * isq.asDiagonal();
+	Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S, Eigen::EigenvaluesOnly);
+	const Real                                     lmax = es.eigenvalues().maxCoeff();
+	return lmax > 0 ? 2 / std::sqrt(lmax) : std::numeric_limits<Real>::infinity();
+}
+
+} // namespace rbsm

@@ -1,0 +1,159 @@
+#include <pkg/rbsm/kernel/ConvexPolygon.hpp>
+#include <pkg/rbsm/kernel/EdgeContact.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace rbsm {
+
+namespace {
+	// Outward unit normal of edge i of a CCW polygon: the edge direction rotated by -90 deg.
+	Vec2 edgeNormal(const std::vector<Vec2>& P, int i)
+	{
+		const Vec2 e = P[(i + 1) % P.size()] - P[i];
+		return Vec2(e.y(), -e.x()).normalized();
+	}
+
+	// Separation of polygon Q from edge i of P (see edgeContact in the header), m.
+	Real edgeSeparation(const std::vector<Vec2>& P, int i, const std::vector<Vec2>& Q)
+	{
+		const Vec2 n = edgeNormal(P, i);
+		Real       s = std::numeric_limits<Real>::infinity();
+		for (const auto& w : Q) s = std::min(s, n.dot(w - P[i]));
+		return s;
+	}
+
+	// Restricts [lo,hi] (parameter lambda in [0,1]) to where a + b*lambda >= 0.
+	void clipLinear(Real a, Real b, Real& lo, Real& hi)
+	{
+		if (b == 0) {
+			if (a < 0) hi = lo - 1; // empty
+			return;
+		}
+		const Real root = -a / b;
+		if (b > 0) lo = std::max(lo, root);
+		else hi = std::min(hi, root);
+	}
+} // namespace
+
+EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, Real maxSeparation, const ContactHint* hint, Real hysteresis)
+{
+	EdgeContact c;
+	const int   nA = int(A.size()), nB = int(B.size());
+	if (nA < 3 || nB < 3) return c;
+
+	// --- separating-axis search -----------------------------------------------------------
+	int  bestBody = 1, bestEdge = 0;
+	Real best = -std::numeric_limits<Real>::infinity();
+	for (int i = 0; i < nA; ++i) {
+		const Real s = edgeSeparation(A, i, B);
+		if (s > best) best = s, bestBody = 1, bestEdge = i;
+	}
+	const int  bestA = bestEdge;
+	const Real sepA  = best;
+	for (int i = 0; i < nB; ++i) {
+		const Real s = edgeSeparation(B, i, A);
+		if (s > best) best = s, bestBody = 2, bestEdge = i;
+	}
+
+	// Preferred edge: the hint's, else A's best. Keep it unless the best is clearly better.
+	const Real tol      = hysteresis * std::min(polygonSize(A), polygonSize(B));
+	int        prefBody = 1, prefEdge = bestA;
+	Real       prefSep  = sepA;
+	if (hint && (hint->refBody == 1 || hint->refBody == 2) && hint->refEdge >= 0 && hint->refEdge < (hint->refBody == 1 ? nA : nB)) {
+		prefBody = hint->refBody;
+		prefEdge = hint->refEdge;
+		prefSep  = (prefBody == 1) ? edgeSeparation(A, prefEdge, B) : edgeSeparation(B, prefEdge, A);
+	}
+	int  refBody = bestBody, refEdge = bestEdge;
+	Real sep     = best;
+	if (prefSep >= best - tol) refBody = prefBody, refEdge = prefEdge, sep = prefSep;
+
+	c.separation = sep;
+	c.refBody    = refBody;
+	c.refEdge    = refEdge;
+	if (!(sep <= maxSeparation)) return c; // also rejects NaN
+
+	const std::vector<Vec2>& R = (refBody == 1) ? A : B; // reference polygon
+	const std::vector<Vec2>& I = (refBody == 1) ? B : A; // incident polygon
+	const int                nI = int(I.size());
+
+	// --- reference edge frame ---------------------------------------------------------------
+	const Vec2 r0 = R[refEdge], r1 = R[(refEdge + 1) % R.size()];
+	const Real Lr   = (r1 - r0).norm();
+	const Vec2 tRef = (r1 - r0) / Lr;           // along the reference edge (CCW direction)
+	const Vec2 nRef(tRef.y(), -tRef.x());       // outward normal of the reference polygon
+
+	// --- incident edge: outward normal most anti-parallel to nRef ------------------------------
+	int  inc = 0;
+	Real minDot = std::numeric_limits<Real>::infinity();
+	for (int i = 0; i < nI; ++i) {
+		const Real d = edgeNormal(I, i).dot(nRef);
+		if (d < minDot) minDot = d, inc = i;
+	}
+	const Vec2 q0 = I[inc], q1 = I[(inc + 1) % nI];
+	c.incEdge     = inc;
+
+	// Incident point q(lambda) = q0 + lambda (q1 - q0), lambda in [0,1]. In the reference frame:
+	//   coordinate along the edge  x(lambda) = tRef.(q - r0)   (seed eq. (9))
+	//   overlap                    d(lambda) = -nRef.(q - r0)  (seed eq. (8), penetration > 0)
+	const Real x0 = tRef.dot(q0 - r0), x1 = tRef.dot(q1 - r0);
+	const Real g0 = -nRef.dot(q0 - r0), g1 = -nRef.dot(q1 - r0);
+	Real       lo = 0, hi = 1;
+	clipLinear(x0, x1 - x0, lo, hi);                              // x >= 0
+	clipLinear(Lr - x0, -(x1 - x0), lo, hi);                      // x <= Lr
+	clipLinear(g0 + maxSeparation, g1 - g0, lo, hi);              // d >= -maxSeparation
+	if (!(lo <= hi)) return c;
+
+	auto xAt = [&](Real l) { return std::clamp(x0 + l * (x1 - x0), Real(0), Lr); };
+	auto dAt = [&](Real l) { return g0 + l * (g1 - g0); };
+	Vec2 pa = r0 + xAt(lo) * tRef, pb = r0 + xAt(hi) * tRef;
+	Real da = dAt(lo), db = dAt(hi);
+
+	// --- body-1 -> body-2 convention ---------------------------------------------------------
+	c.normal  = (refBody == 1) ? nRef : Vec2(-nRef);
+	c.tangent = Vec2(-c.normal.y(), c.normal.x());
+	if ((pb - pa).dot(c.tangent) < 0) std::swap(pa, pb), std::swap(da, db);
+	c.p0       = pa;
+	c.p1       = pb;
+	c.d0       = da;
+	c.d1       = db;
+	c.length   = (pb - pa).norm();
+	c.touching = true;
+	return c;
+}
+
+void integrationPoints(int nIP, std::vector<Real>& s, std::vector<Real>& w)
+{
+	if (nIP < 1 || nIP > 8) throw std::invalid_argument("integrationPoints: nIP must be in 1..8");
+	s.assign(nIP, 0);
+	w.assign(nIP, 0);
+	// Gauss-Legendre nodes x_k on [-1,1] are the roots of P_n; Newton iteration from the
+	// classical initial guess cos(pi (k - 1/4)/(n + 1/2)) converges to machine precision.
+	// Weights on [-1,1]: 2 / ((1 - x^2) P_n'(x)^2). Mapped to [0,1]: s = (1+x)/2, w/2.
+	const int n = nIP;
+	for (int k = 0; k < n; ++k) {
+		Real x = std::cos(M_PI * (k + 0.75) / (n + 0.5));
+		Real dp = 1;
+		for (int it = 0; it < 100; ++it) {
+			Real p0 = 1, p1 = x; // P_0, P_1
+			for (int j = 2; j <= n; ++j) {
+				const Real p2 = ((2 * j - 1) * x * p1 - (j - 1) * p0) / j;
+				p0 = p1;
+				p1 = p2;
+			}
+			const Real pn = (n == 1) ? x : p1, pnm1 = (n == 1) ? 1 : p0;
+			dp = n * (x * pn - pnm1) / (x * x - 1);
+			const Real dx = pn / dp;
+			x -= dx;
+			if (std::abs(dx) < 1e-16) break;
+		}
+		// nodes from cos() come in decreasing x; store increasing s
+		s[n - 1 - k] = (1 + x) / 2;
+		w[n - 1 - k] = 1 / ((1 - x * x) * dp * dp);
+	}
+}
+
+} // namespace rbsm

@@ -1,0 +1,75 @@
+// Edge-to-edge contact between two convex polygons (the seed paper's Fig. 3 and eqs. (8)-(9)),
+// computed as a Box2D-style contact manifold: separating-axis search + clipping of the
+// incident edge against the reference edge.
+//
+// Conventions (YADE's, relied upon by the plugin):
+//  * body 1 = polygon A, body 2 = polygon B, both CONVEX and COUNTER-CLOCKWISE, WORLD coordinates;
+//  * the unit normal n points from body 1 to body 2, whichever polygon holds the reference edge;
+//  * the tangent is t = (-n.y, n.x) (n rotated by +90 deg);
+//  * the contact segment runs from p0 to p1 along +t;
+//  * overlaps d0, d1 are positive for penetration and negative for a gap (m).
+//
+// Relation to the seed's eqs. (8)-(9): for a point m of the incident edge and the reference edge
+// b1->b2 of length L_b, eq. (8) is the signed distance of m from the reference line and eq. (9)
+// its coordinate along that line. Here d = -n_ref.(m - b1) is eq. (8) with the sign chosen so that
+// penetration is positive, and the contact points are the feet of those distances on the
+// reference line (eq. (9)).
+#pragma once
+
+#include <pkg/rbsm/kernel/Types.hpp>
+
+#include <vector>
+
+namespace rbsm {
+
+struct EdgeContact {
+	bool touching = false; ///< false: largest separation > maxSeparation or nothing overlaps
+	Vec2 normal  = Vec2::Zero(); ///< unit, from body 1 (A) to body 2 (B)
+	Vec2 tangent = Vec2::Zero(); ///< (-normal.y, normal.x)
+	/// End points of the contact segment, ON THE REFERENCE EDGE LINE (the straight line through
+	/// the reference edge of the reference polygon): they are the orthogonal projections onto
+	/// that line of the clipped incident-edge end points. Ordered so that (p1 - p0).t >= 0.
+	Vec2 p0 = Vec2::Zero(), p1 = Vec2::Zero();
+	Real length = 0; ///< |p1 - p0| (m); 0 for a corner-on-corner touch
+	/// Normal overlap at p0 and p1 (m): distance of the incident edge behind the reference line,
+	/// measured along the reference normal. Positive = penetration, negative = gap. The overlap
+	/// is linear in between, because both boundaries are straight.
+	Real d0 = 0, d1 = 0;
+	Real separation = 0; ///< largest separation found by the axis search (m; negative = overlap)
+	int  refBody = 0;    ///< 1 if the reference edge belongs to A, 2 if to B
+	int  refEdge = -1;   ///< index i of the reference edge (vertex i -> vertex i+1)
+	int  incEdge = -1;   ///< index of the incident edge on the other polygon
+};
+
+/// Which edge was the reference at the previous step (refBody 1 or 2; refBody 0 = no hint).
+struct ContactHint {
+	int refBody = 0;
+	int refEdge = -1;
+};
+
+/// Computes the edge-to-edge contact of A (body 1) and B (body 2).
+///
+/// Separating-axis search: for every edge i of either polygon, with outward unit normal n_i and
+/// first vertex v_i, the separation is s_i = min over the other polygon's vertices w of
+/// n_i.(w - v_i). The reference edge is the one with the largest s_i. To avoid flip-flopping
+/// when two edges are (nearly) equally good -- e.g. an exactly shared edge, where A's and B's
+/// edges are antiparallel and both have s = 0 -- a candidate only replaces the preferred edge if
+/// it is better by more than  tol = hysteresis * min(size A, size B)  (m). The preferred edge is
+/// the hint's edge if a hint is given, otherwise the best edge of A.
+///
+/// maxSeparation (m, >= 0): if the largest separation exceeds it, there is no contact.
+/// Otherwise the incident edge (the edge of the other polygon whose outward normal is most
+/// anti-parallel to n_ref) is clipped to (i) the two side planes of the reference edge and
+/// (ii) the part where the gap is at most maxSeparation (d >= -maxSeparation).
+EdgeContact edgeContact(
+        const std::vector<Vec2>& A, const std::vector<Vec2>& B, Real maxSeparation, const ContactHint* hint = nullptr, Real hysteresis = 1e-3);
+
+/// Gauss-Legendre integration points on the contact segment, nIP in 1..8 (throws
+/// std::invalid_argument otherwise). s: parametric positions in [0,1] from p0 to p1 (increasing);
+/// w: weights summing to 1, so that  integral over the segment of f = length * sum_k w_k f(s_k).
+/// An n-point rule integrates polynomials of degree 2n-1 exactly; for nIP = 2 the points are
+/// s = 1/2 -+ 1/(2 sqrt 3) with w = 1/2 each, exact up to degree 3, hence exact for the force
+/// (degree 1) AND the moment (degree 2) of a linearly varying traction.
+void integrationPoints(int nIP, std::vector<Real>& s, std::vector<Real>& w);
+
+} // namespace rbsm

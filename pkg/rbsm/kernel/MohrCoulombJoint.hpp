@@ -1,0 +1,62 @@
+// Per-integration-point RBSM joint law: linear springs (seed eq. (10)) + Mohr-Coulomb slip
+// (seed eq. (11)) + tension cut-off, with irreversible loss of cohesion.
+//
+// Sign conventions (differ from the seed, which takes tension positive):
+//  * sigma_n = kn * delta_n, positive in COMPRESSION; delta_n = normal overlap (m, > 0 when the
+//    blocks interpenetrate, from EdgeContact d0/d1). The seed's yield function
+//    f = tau^2 - (c - sigma tan(phi))^2 with tension-positive sigma = -sigma_n becomes
+//        f = tau^2 - (c + sigma_n tan(phi))^2.
+//  * tau = shear traction ON BODY 2 ALONG +t (Pa). It is updated incrementally,
+//        tau <- tau - ks * dus,
+//    where dus = this step's tangential displacement of body 2 relative to body 1 along t (m):
+//    the traction resists the relative motion. The traction on body 1 is the opposite.
+//  * the normal traction on body 2 is +sigma_n along +n (pushes body 2 away from body 1).
+//
+// Units: kn, ks in Pa/m; c, sigma_t in Pa; area in m^2 (tributary area of the point =
+// weight * length * thickness); energies in J.
+#pragma once
+
+#include <pkg/rbsm/kernel/Types.hpp>
+
+namespace rbsm {
+
+struct JointPointState {
+	Real shearTraction = 0;     ///< tau (Pa), see above
+	bool intact        = true;  ///< cohesion and tensile strength still active
+	bool slipping      = false; ///< on the Mohr-Coulomb surface this step
+	bool open          = false; ///< broken and not in compression: carries nothing
+};
+
+struct JointParams {
+	Real kn = 0;              ///< Pa/m
+	Real ks = 0;              ///< Pa/m
+	Real cohesion = 0;        ///< c (Pa), active while intact
+	Real tanPhi = 0;          ///< tan(friction angle)
+	Real tensileStrength = 0; ///< sigma_t (Pa), active while intact
+};
+
+struct JointPointResult {
+	Real normalTraction = 0;   ///< sigma_n (Pa, compression > 0)
+	Real shearTraction  = 0;   ///< tau (Pa), = state.shearTraction after the update
+	Real normalForce    = 0;   ///< sigma_n * area (N), on body 2 along +n
+	Real shearForce     = 0;   ///< tau * area (N), on body 2 along +t
+	Real elasticEnergy  = 0;   ///< (sigma_n^2/(2 kn) + tau^2/(2 ks)) * area (J), after the update
+	Real dissipated     = 0;   ///< frictional dissipation this step: tau_max * |plastic slip| * area (J)
+	bool brokeInTension = false;
+	bool brokeInShear   = false;
+};
+
+/// One explicit step of the joint law at one integration point.
+/// Rules, in order:
+///  1. sigma_n = kn * deltaN; trial tau = state.tau - ks * dus.
+///  2. Tension cut-off: intact and sigma_n < -sigma_t -> breaks irreversibly (c, sigma_t -> 0),
+///     is open, sigma_n = tau = 0.
+///  3. Broken (or cohesionless) with deltaN <= 0 -> open, carries nothing, tau reset to 0.
+///  4. Shear: |tau| > c + sigma_n tan(phi): if intact it breaks (c -> 0; if it is then not in
+///     compression it opens as in 3); tau is returned to the surface +-(sigma_n tan(phi)) and the
+///     point is slipping; plastic slip = (|tau_trial| - tau_max) / ks.
+/// Cheap path: c = sigma_t = 0 means a cohesionless joint, treated as already broken (no
+/// strength checks beyond friction). A point that has broken never heals.
+JointPointResult updateJointPoint(JointPointState& state, const JointParams& p, Real deltaN, Real dus, Real area);
+
+} // namespace rbsm
