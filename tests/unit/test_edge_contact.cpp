@@ -1,1 +1,292 @@
+// Edge-to-edge contact: hand-computed configurations (penetration, segment, length) and
+// invariances (A-B vs B-A, rigid motion, scale).
+#include <pkg/rbsm/kernel/ConvexPolygon.hpp>
+#include <pkg/rbsm/kernel/EdgeContact.hpp>
+
 #include <gtest/gtest.h>
+#include <cmath>
+#include <random>
+
+using namespace rbsm;
+
+namespace {
+std::vector<Vec2> rect(Real x0, Real y0, Real w, Real h) { return { { x0, y0 }, { x0 + w, y0 }, { x0 + w, y0 + h }, { x0, y0 + h } }; }
+std::vector<Vec2> scaled(std::vector<Vec2> v, Real s)
+{
+	for (auto& p : v) p *= s;
+	return v;
+}
+// rigid motion x -> R(a) x + t
+std::vector<Vec2> moved(const std::vector<Vec2>& v, const Vec2& t, Real a) { return toWorld(v, t, a); }
+void expectVec(const Vec2& a, const Vec2& b, Real tol) { EXPECT_NEAR((a - b).norm(), 0, tol) << a.transpose() << " vs " << b.transpose(); }
+// invariants every contact must satisfy
+void expectConventions(const EdgeContact& c)
+{
+	ASSERT_TRUE(c.touching);
+	EXPECT_NEAR(c.normal.norm(), 1, 1e-14);
+	expectVec(c.tangent, Vec2(-c.normal.y(), c.normal.x()), 1e-15);
+	EXPECT_GE((c.p1 - c.p0).dot(c.tangent), -1e-15);
+	EXPECT_NEAR(c.length, (c.p1 - c.p0).norm(), 1e-15);
+	EXPECT_NEAR((c.p1 - c.p0).dot(c.normal), 0, 1e-12 * (1 + c.length)); // segment is along t
+}
+} // namespace
+
+// Unit square A, square B shifted by (0.2, 0.9): overlap 0.1 in y over x in [0.2, 1].
+// Reference: A's top edge (y = 1, tie with B's bottom edge broken in favour of A).
+TEST(EdgeContact, OverlappingSquares)
+{
+	const auto c = edgeContact(rect(0, 0, 1, 1), rect(0.2, 0.9, 1, 1), 0);
+	expectConventions(c);
+	EXPECT_EQ(c.refBody, 1);
+	EXPECT_EQ(c.refEdge, 2);
+	expectVec(c.normal, Vec2(0, 1), 1e-15);
+	EXPECT_NEAR(c.length, 0.8, 1e-14);
+	EXPECT_NEAR(c.d0, 0.1, 1e-14);
+	EXPECT_NEAR(c.d1, 0.1, 1e-14);
+	// t = (-1, 0): p0 is the right end, both on the reference line y = 1
+	expectVec(c.p0, Vec2(1, 1), 1e-14);
+	expectVec(c.p1, Vec2(0.2, 1), 1e-14);
+	EXPECT_NEAR(c.separation, -0.1, 1e-14);
+}
+
+// (Clip points where d = 0 move by the documented 1e-12*size round-off slop: tolerance 1e-11.)
+// Triangle tip (0.5, 0.9) into the top of the unit square. Reference: square top (y = 1).
+// Incident: the triangle edge (-0.2,1.5)->(0.5,0.9), clipped to d >= 0: it crosses y = 1 at
+// x = -0.2 + 0.7*5/6. Overlap is 0.1 at the tip and 0 at the crossing.
+TEST(EdgeContact, TriangleVertexIntoSquare)
+{
+	const std::vector<Vec2> tri = { { 0.5, 0.9 }, { 1.0, 1.5 }, { -0.2, 1.5 } };
+	ASSERT_EQ(polygonProblem(tri), "");
+	const auto c = edgeContact(rect(0, 0, 1, 1), tri, 0);
+	expectConventions(c);
+	EXPECT_EQ(c.refBody, 1);
+	expectVec(c.normal, Vec2(0, 1), 1e-15);
+	const Real xc = -0.2 + 0.7 * 5.0 / 6.0;
+	expectVec(c.p0, Vec2(0.5, 1), 1e-11);
+	expectVec(c.p1, Vec2(xc, 1), 1e-11);
+	EXPECT_NEAR(c.d0, 0.1, 1e-11);
+	EXPECT_NEAR(c.d1, 0.0, 1e-11);
+	EXPECT_NEAR(c.length, 0.5 - xc, 1e-11);
+}
+
+// Exactly shared edge: d0 = d1 = 0 and the length is the shared length.
+TEST(EdgeContact, SharedEdgeFullAndPartial)
+{
+	auto c = edgeContact(rect(0, 0, 1, 1), rect(0, 1, 1, 1), 0);
+	expectConventions(c);
+	EXPECT_NEAR(c.length, 1, 1e-15);
+	EXPECT_NEAR(c.d0, 0, 1e-15);
+	EXPECT_NEAR(c.d1, 0, 1e-15);
+	c = edgeContact(rect(0, 0, 1, 1), rect(0.3, 1, 1, 1), 0);
+	expectConventions(c);
+	EXPECT_NEAR(c.length, 0.7, 1e-15);
+	EXPECT_NEAR(c.d0, 0, 1e-15);
+	expectVec(c.normal, Vec2(0, 1), 1e-15);
+}
+
+// Shared edge after a random rigid motion of both: round-off must not make it "not touching",
+// and the reference must not flip between steps (hysteresis, with or without a hint).
+TEST(EdgeContact, SharedEdgeIsStableUnderRoundOff)
+{
+	std::mt19937 rng(42);
+	std::uniform_real_distribution<Real> U(-1, 1);
+	for (int trial = 0; trial < 50; ++trial) {
+		const Vec2 t(100 * U(rng), 100 * U(rng));
+		const Real a = M_PI * U(rng);
+		const auto A = moved(rect(0, 0, 1, 1), t, a), B = moved(rect(0.25, 1, 2, 0.5), t, a);
+		const auto c0 = edgeContact(A, B, 0);
+		expectConventions(c0);
+		EXPECT_NEAR(c0.length, 0.75, 1e-12);
+		EXPECT_NEAR(c0.d0, 0, 1e-12);
+		EXPECT_NEAR(c0.d1, 0, 1e-12);
+		// tiny wobble of B (1e-9 rad about the edge midpoint), hint from the previous step
+		ContactHint h { c0.refBody, c0.refEdge };
+		for (int k = 0; k < 10; ++k) {
+			const Real       w   = (k % 2 ? 1 : -1) * 1e-9;
+			std::vector<Vec2> Bw = B;
+			const Vec2       mid = localToWorld(Vec2(0.625, 1), t, a);
+			for (auto& p : Bw) p = mid + rotate(p - mid, w);
+			const auto c = edgeContact(A, Bw, 0, &h);
+			ASSERT_TRUE(c.touching);
+			EXPECT_EQ(c.refBody, c0.refBody);
+			EXPECT_EQ(c.refEdge, c0.refEdge);
+			h = { c.refBody, c.refEdge };
+		}
+	}
+}
+
+// A hint within tolerance is honoured (B's bottom edge, index 0); a clearly worse one is not.
+TEST(EdgeContact, HintHysteresis)
+{
+	const auto A = rect(0, 0, 1, 1), B = rect(0.2, 0.9, 1, 1);
+	ContactHint good { 2, 0 };
+	auto c = edgeContact(A, B, 0, &good);
+	expectConventions(c);
+	EXPECT_EQ(c.refBody, 2);
+	EXPECT_EQ(c.refEdge, 0);
+	expectVec(c.normal, Vec2(0, 1), 1e-15); // still from A to B
+	EXPECT_NEAR(c.p0.y(), 0.9, 1e-15);      // on B's bottom line
+	EXPECT_NEAR(c.length, 0.8, 1e-14);
+	EXPECT_NEAR(c.d0, 0.1, 1e-14);
+	ContactHint bad { 1, 3 }; // A's left edge, separation -1.2
+	c = edgeContact(A, B, 0, &bad);
+	EXPECT_EQ(c.refBody, 1);
+	EXPECT_EQ(c.refEdge, 2);
+}
+
+// Corner on corner: touching at a single point, zero length, zero overlap.
+TEST(EdgeContact, CornerOnCorner)
+{
+	const auto c = edgeContact(rect(0, 0, 1, 1), rect(1, 1, 1, 1), 0);
+	ASSERT_TRUE(c.touching);
+	EXPECT_NEAR(c.length, 0, 1e-14);
+	EXPECT_NEAR(c.d0, 0, 1e-14);
+	expectVec(c.p0, Vec2(1, 1), 1e-14);
+	// overlapping corners by 0.1 x 0.1: a 0.1-long contact with overlap 0.1
+	const auto d = edgeContact(rect(0, 0, 1, 1), rect(0.9, 0.9, 1, 1), 0);
+	expectConventions(d);
+	EXPECT_NEAR(d.length, 0.1, 1e-14);
+	EXPECT_NEAR(d.d0, 0.1, 1e-14);
+	EXPECT_NEAR(d.d1, 0.1, 1e-14);
+}
+
+// Small gap g: no contact when g > maxSeparation; otherwise d0 = d1 = -g.
+TEST(EdgeContact, SmallGap)
+{
+	const Real g = 1e-3;
+	const auto A = rect(0, 0, 1, 1), B = rect(0, 1 + g, 1, 1);
+	EXPECT_FALSE(edgeContact(A, B, 0).touching);
+	EXPECT_FALSE(edgeContact(A, B, 0.5 * g).touching);
+	const auto c = edgeContact(A, B, 2 * g);
+	expectConventions(c);
+	EXPECT_NEAR(c.d0, -g, 1e-15);
+	EXPECT_NEAR(c.d1, -g, 1e-15);
+	EXPECT_NEAR(c.length, 1, 1e-15);
+	EXPECT_NEAR(c.separation, g, 1e-15);
+	// far apart
+	EXPECT_FALSE(edgeContact(A, rect(5, 5, 1, 1), 0.1).touching);
+}
+
+// Tilted block: only the part within maxSeparation counts. B's bottom edge goes from overlap
+// 0.1 at x = 0 to a gap of 0.1 at x = 1 (linear); with maxSeparation = 0 the contact is x in [0, 0.5].
+TEST(EdgeContact, TiltedEdgeClippedByGap)
+{
+	const std::vector<Vec2> B = { { 0, 0.9 }, { 1, 1.1 }, { 1, 2 }, { 0, 2 } };
+	ASSERT_EQ(polygonProblem(B), "");
+	const auto c = edgeContact(rect(-1, 0, 3, 1), B, 0);
+	expectConventions(c);
+	EXPECT_EQ(c.refBody, 1);
+	EXPECT_NEAR(c.length, 0.5, 1e-11);
+	// t = (-1,0): p0 at x = 0.5 (overlap 0), p1 at x = 0 (overlap 0.1)
+	expectVec(c.p0, Vec2(0.5, 1), 1e-11);
+	EXPECT_NEAR(c.d0, 0, 1e-11);
+	EXPECT_NEAR(c.d1, 0.1, 1e-11);
+}
+
+// Swapping the bodies gives the same segment with the opposite normal (p0<->p1, d0<->d1),
+// for configurations where the reference edge is unambiguous or shared.
+TEST(EdgeContact, SwapSymmetry)
+{
+	const std::vector<Vec2> tri = { { 0.5, 0.9 }, { 1.0, 1.5 }, { -0.2, 1.5 } };
+	const std::vector<std::pair<std::vector<Vec2>, std::vector<Vec2>>> cases = {
+		{ rect(0, 0, 1, 1), tri }, { rect(0, 0, 1, 1), rect(0.3, 1, 1, 1) }, { rect(0, 0, 2, 1), rect(2, 0.5, 1, 1) }
+	};
+	for (const auto& ab : cases) {
+		const auto c = edgeContact(ab.first, ab.second, 0), r = edgeContact(ab.second, ab.first, 0);
+		expectConventions(c);
+		expectConventions(r);
+		expectVec(r.normal, -c.normal, 1e-15);
+		expectVec(r.p0, c.p1, 1e-14);
+		expectVec(r.p1, c.p0, 1e-14);
+		EXPECT_NEAR(r.d0, c.d1, 1e-14);
+		EXPECT_NEAR(r.d1, c.d0, 1e-14);
+		EXPECT_NEAR(r.length, c.length, 1e-14);
+	}
+}
+
+// A random rigid motion of both polygons moves the contact with them and changes nothing else.
+TEST(EdgeContact, RigidMotionInvariance)
+{
+	const std::vector<Vec2> tri = { { 0.5, 0.9 }, { 1.0, 1.5 }, { -0.2, 1.5 } };
+	const std::vector<std::pair<std::vector<Vec2>, std::vector<Vec2>>> cases = {
+		{ rect(0, 0, 1, 1), rect(0.2, 0.9, 1, 1) }, { rect(0, 0, 1, 1), tri }, { rect(-1, 0, 3, 1), { { 0, 0.9 }, { 1, 1.1 }, { 1, 2 }, { 0, 2 } } }
+	};
+	std::mt19937 rng(7);
+	std::uniform_real_distribution<Real> U(-1, 1);
+	for (const auto& ab : cases) {
+		const auto c = edgeContact(ab.first, ab.second, 0);
+		for (int k = 0; k < 20; ++k) {
+			const Vec2 t(1000 * U(rng), 1000 * U(rng));
+			const Real a = M_PI * U(rng);
+			const auto m = edgeContact(moved(ab.first, t, a), moved(ab.second, t, a), 0);
+			expectConventions(m);
+			EXPECT_EQ(m.refBody, c.refBody);
+			EXPECT_EQ(m.refEdge, c.refEdge);
+			expectVec(m.normal, rotate(c.normal, a), 1e-12);
+			expectVec(m.p0, localToWorld(c.p0, t, a), 1e-9);
+			expectVec(m.p1, localToWorld(c.p1, t, a), 1e-9);
+			EXPECT_NEAR(m.d0, c.d0, 1e-10);
+			EXPECT_NEAR(m.d1, c.d1, 1e-10);
+			EXPECT_NEAR(m.length, c.length, 1e-10);
+		}
+	}
+}
+
+// Scaling all coordinates by L scales lengths and overlaps by L (1 mm ... 100 m).
+TEST(EdgeContact, ScaleInvariance)
+{
+	const auto A = rect(0, 0, 1, 1), B = rect(0.2, 0.9, 1, 1);
+	for (Real L : { 1e-3, 1e-1, 1.0, 10.0, 100.0 }) {
+		const auto c = edgeContact(scaled(A, L), scaled(B, L), 0);
+		expectConventions(c);
+		EXPECT_NEAR(c.length / L, 0.8, 1e-13) << L;
+		EXPECT_NEAR(c.d0 / L, 0.1, 1e-13) << L;
+		EXPECT_NEAR(c.d1 / L, 0.1, 1e-13) << L;
+		expectVec(c.p0 / L, Vec2(1, 1), 1e-13);
+		EXPECT_FALSE(edgeContact(scaled(A, L), scaled(rect(0, 1.001, 1, 1), L), 0).touching) << L;
+	}
+}
+
+// A 1 mm block pressed 10 um into a 100 m block, and the other way round.
+TEST(EdgeContact, VeryDifferentSizes)
+{
+	// coordinates up to 100 m: round-off ~ 1e-14 m on the 1 mm length
+	const auto big = rect(-50, -100, 100, 100), small = rect(0.3, -1e-5, 1e-3, 1e-3);
+	auto c = edgeContact(big, small, 0);
+	expectConventions(c);
+	expectVec(c.normal, Vec2(0, 1), 1e-15);
+	EXPECT_NEAR(c.length, 1e-3, 1e-13);
+	EXPECT_NEAR(c.d0, 1e-5, 1e-13);
+	EXPECT_NEAR(c.d1, 1e-5, 1e-15);
+	c = edgeContact(small, big, 0);
+	expectConventions(c);
+	expectVec(c.normal, Vec2(0, -1), 1e-15);
+	EXPECT_NEAR(c.length, 1e-3, 1e-13);
+	EXPECT_NEAR(c.d0, 1e-5, 1e-15);
+}
+
+// Slender blocks (aspect 100) stacked with an offset: overlap 0.01 over x in [10, 100].
+TEST(EdgeContact, SlenderBlocks)
+{
+	const auto c = edgeContact(rect(0, 0, 100, 1), rect(10, 0.99, 100, 1), 0);
+	expectConventions(c);
+	EXPECT_NEAR(c.length, 90, 1e-12);
+	EXPECT_NEAR(c.d0, 0.01, 1e-12);
+	EXPECT_NEAR(c.d1, 0.01, 1e-12);
+	// standing slender block on its short edge
+	const auto s = edgeContact(rect(0, 0, 100, 1), rect(50, 0.999, 1, 100), 0);
+	expectConventions(s);
+	EXPECT_NEAR(s.length, 1, 1e-12);
+	EXPECT_NEAR(s.d0, 1e-3, 1e-12);
+}
+
+// Deep overlap (80 % of the block): still a finite, sensible answer.
+TEST(EdgeContact, DeepOverlapIsFinite)
+{
+	const auto c = edgeContact(rect(0, 0, 1, 1), rect(0.1, 0.2, 0.8, 1), 0);
+	expectConventions(c);
+	EXPECT_TRUE(std::isfinite(c.d0) && std::isfinite(c.d1) && std::isfinite(c.length));
+	EXPECT_NEAR(c.d0, 0.8, 1e-14);
+	EXPECT_NEAR(c.length, 0.8, 1e-14);
+	expectVec(c.normal, Vec2(0, 1), 1e-15);
+}

@@ -74,7 +74,11 @@ EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, 
 	c.separation = sep;
 	c.refBody    = refBody;
 	c.refEdge    = refEdge;
-	if (!(sep <= maxSeparation)) return c; // also rejects NaN
+	// Round-off slop: an exactly shared edge moved by a rigid motion has |d| ~ 1e-16 size, which
+	// must still count as touching when maxSeparation = 0.
+	const Real slop   = 1e-12 * std::min(polygonSize(A), polygonSize(B));
+	const Real maxSep = std::max(maxSeparation, Real(0)) + slop;
+	if (!(sep <= maxSep)) return c; // also rejects NaN
 
 	const std::vector<Vec2>& R = (refBody == 1) ? A : B; // reference polygon
 	const std::vector<Vec2>& I = (refBody == 1) ? B : A; // incident polygon
@@ -104,7 +108,7 @@ EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, 
 	Real       lo = 0, hi = 1;
 	clipLinear(x0, x1 - x0, lo, hi);                              // x >= 0
 	clipLinear(Lr - x0, -(x1 - x0), lo, hi);                      // x <= Lr
-	clipLinear(g0 + maxSeparation, g1 - g0, lo, hi);              // d >= -maxSeparation
+	clipLinear(g0 + maxSep, g1 - g0, lo, hi);                     // d >= -maxSeparation
 	if (!(lo <= hi)) return c;
 
 	auto xAt = [&](Real l) { return std::clamp(x0 + l * (x1 - x0), Real(0), Lr); };

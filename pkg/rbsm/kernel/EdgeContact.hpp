@@ -57,7 +57,8 @@ struct ContactHint {
 /// it is better by more than  tol = hysteresis * min(size A, size B)  (m). The preferred edge is
 /// the hint's edge if a hint is given, otherwise the best edge of A.
 ///
-/// maxSeparation (m, >= 0): if the largest separation exceeds it, there is no contact.
+/// maxSeparation (m, >= 0): if the largest separation exceeds it, there is no contact. A round-off
+/// slop of 1e-12 * min(size A, size B) is added so that exactly shared edges count as touching.
 /// Otherwise the incident edge (the edge of the other polygon whose outward normal is most
 /// anti-parallel to n_ref) is clipped to (i) the two side planes of the reference edge and
 /// (ii) the part where the gap is at most maxSeparation (d >= -maxSeparation).
