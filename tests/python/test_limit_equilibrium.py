@@ -1,0 +1,436 @@
+"""Tests of py/yade_rbsm/limit_equilibrium.py (pure Python, no YADE).
+
+Each test states what it compares.  Units: m, kN/m^3, kPa, kN/m.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from conftest import load_limit_equilibrium
+
+le = load_limit_equilibrium()
+Layer, Slope, Circle = le.Layer, le.Slope, le.Circle
+
+
+def tand(a):
+    return math.tan(math.radians(a))
+
+
+# ---------------------------------------------------------------------------
+# published worked example
+# ---------------------------------------------------------------------------
+def _verruijt_slope():
+    # homogeneous slope, height 4.5 m, inclination 1:2 (vertical:horizontal),
+    # on a 2 m foundation of the same soil (model 18 m wide, 6.5 m high);
+    # toe at (0, 0), crest at (9, 4.5).
+    return Slope(
+        [(-4.0, 0.0), (0.0, 0.0), (9.0, 4.5), (14.0, 4.5)],
+        Layer(c=5.0, phi=20.0, gamma=16.0, name="slope"),
+    )
+
+
+def test_published_verruijt_bishop_critical_circle():
+    """Published: code_aster validation manual V6.03.006 (test case ssnp006,
+    "Reference problem" and "Benchmark solution" pages), which takes its
+    reference from the Plaxis 2D verification case, itself citing Verruijt's
+    simplified-Bishop program: homogeneous slope 4.5 m high, slope 1:2, model
+    18 m x 6.5 m (2 m foundation), gamma = 16 kN/m^3, phi = 20 deg,
+    c = 5 kPa, dry.  Bishop simplified with a grid of centres gives the
+    critical FS = 1.534 (Plaxis SRM: 1.54).
+
+    Compared: our critical Bishop FS over a grid of centres with the circle
+    through the toe (and an unrestricted radius check on a coarser grid)
+    must be within +-0.02 of 1.534.  The tolerance covers the unpublished
+    slice count / grid of the reference program (about 1 %); the circle is
+    not allowed below the 2 m foundation.
+    """
+    s = _verruijt_slope()
+    toe = le.critical_circle(s, (-4, 10), (5, 16), nx=15, ny=15, through=(0.0, 0.0),
+                             method="bishop", n=50, refine=3)
+    assert toe.fs == pytest.approx(1.534, abs=0.02)
+    assert toe.best.slices.y_base.min() > -2.0  # stays in the 2 m foundation
+    free = le.critical_circle(s, (-2, 8), (5, 14), nx=7, ny=7, r_range=(4, 16), nr=25,
+                              method="bishop", n=50, refine=2)
+    assert free.fs == pytest.approx(1.534, abs=0.02)
+    # Fellenius is the more conservative method for this slope (known
+    # property of the ordinary method for c-phi soils)
+    fel = le.critical_circle(s, (-4, 10), (5, 16), nx=15, ny=15, through=(0.0, 0.0),
+                             method="fellenius", n=50, refine=3)
+    assert 1.3 < fel.fs < toe.fs
+
+
+# ---------------------------------------------------------------------------
+# closed forms
+# ---------------------------------------------------------------------------
+def _infinite_slope(beta, z, length, c, phi, gamma):
+    t = math.tan(math.radians(beta))
+    L = length
+    ground = [(-1.0, -t), (L + 1.0, (L + 1.0) * t)]
+    # slip surface parallel to the ground at vertical depth z, with short
+    # steep end segments that daylight at x = 0 and x = L
+    d = 0.05 * z  # horizontal extent of the end segments
+    slip = [(0.0, 0.0), (d, d * t - z), (L - d, (L - d) * t - z), (L, L * t)]
+    return Slope(ground, Layer(c=c, phi=phi, gamma=gamma)), slip
+
+
+@pytest.mark.parametrize("beta,phi,c", [(20.0, 30.0, 0.0), (30.0, 35.0, 0.0), (25.0, 20.0, 8.0)])
+def test_infinite_slope_limit(beta, phi, c):
+    """Compares Fellenius on a long planar surface parallel to the ground
+    (length/depth = 500) with the infinite-slope closed form
+    FS = c / (gamma z cos^2(beta) tan(beta)) + tan(phi)/tan(beta) (dry).
+    The end segments contribute O(z/L); tolerance 0.5 %."""
+    z, gamma, L = 2.0, 18.0, 1000.0
+    s, slip = _infinite_slope(beta, z, L, c, phi, gamma)
+    r = le.fellenius_polyline(s, slip, n=200)
+    b = math.radians(beta)
+    exact = c / (gamma * z * math.cos(b) ** 2 * math.tan(b)) + tand(phi) / tand(beta)
+    assert r.fs == pytest.approx(exact, rel=5e-3)
+
+
+def _wedge(c=10.0, phi=30.0, gamma=20.0, **kw):
+    # 45 deg slope, height 10 m, toe at (0,0), crest at (10,10); faces -x
+    ground = [(-10.0, 0.0), (0.0, 0.0), (10.0, 10.0), (30.0, 10.0)]
+    return Slope(ground, Layer(c=c, phi=phi, gamma=gamma), **kw)
+
+
+def _wedge_hand(c, phi, gamma, u_l=0.0):
+    # planar slip from the toe (0,0) to (20,10): theta = atan(1/2)
+    th = math.atan2(10.0, 20.0)
+    W = gamma * 0.5 * 10.0 * 10.0  # triangle (0,0),(10,10),(20,10): area 50 m^2
+    L = math.hypot(20.0, 10.0)
+    N = W * math.cos(th) - u_l
+    T = W * math.sin(th)
+    return (c * L + N * tand(phi)) / T, N, T
+
+
+@pytest.mark.parametrize("c,phi", [(10.0, 30.0), (0.0, 35.0), (25.0, 0.0)])
+def test_planar_wedge_hand_calculation(c, phi):
+    """Compares fellenius_polyline on a single planar surface through a
+    homogeneous 45-deg wedge with the hand calculation of the wedge
+    (W = gamma * 50 m^2, FS = (c L + W cos(theta) tan(phi)) / (W sin(theta))),
+    including the totals sum N' and sum T (exact: slices are trapezoids)."""
+    s = _wedge(c=c, phi=phi)
+    r = le.fellenius_polyline(s, [(0.0, 0.0), (20.0, 10.0)], n=37)
+    fs, N, T = _wedge_hand(c, phi, 20.0)
+    assert r.fs == pytest.approx(fs, rel=1e-10)
+    assert r.normal == pytest.approx(N, rel=1e-10)
+    assert r.shear == pytest.approx(T, rel=1e-10)
+    assert r.n_slices >= 37
+
+
+def test_planar_wedge_mirrored_gives_same_result():
+    """The same wedge mirrored about x = 0 (slope facing +x) must give the
+    same FS, sum N and sum T (sliding direction detected automatically)."""
+    s = Slope([(-30.0, 10.0), (-10.0, 10.0), (0.0, 0.0), (10.0, 0.0)], Layer(10.0, 30.0, 20.0))
+    r = le.fellenius_polyline(s, [(-20.0, 10.0), (0.0, 0.0)])
+    fs, N, T = _wedge_hand(10.0, 30.0, 20.0)
+    assert (r.fs, r.normal, r.shear) == pytest.approx((fs, N, T), rel=1e-10)
+    assert r.slices.direction == +1
+
+
+def test_slip_polyline_extending_above_ground_is_clipped():
+    """A slip line drawn beyond the ground (ends above it) is clipped where
+    it daylights: same result as the exact toe-to-crest line."""
+    s = _wedge()
+    r = le.fellenius_polyline(s, [(-2.0, 1.0), (0.0, 0.0), (24.0, 12.0)])
+    fs, _, _ = _wedge_hand(10.0, 30.0, 20.0)
+    assert r.fs == pytest.approx(fs, rel=1e-10)
+    assert r.slices.x_entry == pytest.approx(0.0, abs=1e-9)
+    assert r.slices.x_exit == pytest.approx(20.0, abs=1e-9)
+
+
+def test_two_layer_wedge_weight_and_base_strength():
+    """Two layers: top layer (gamma 18) above y = 5, lower layer (gamma 22,
+    c = 4, phi = 25) below.  Compared with the hand calculation: the wedge
+    triangle (0,0),(10,10),(20,10) is split by y = 5 into a lower triangle
+    of area 12.5 m^2 and an upper trapezoid of 37.5 m^2; the base from
+    (0,0) to (20,10) lies in the lower layer up to y = 5 and in the top
+    layer above (c = 2, phi = 33)."""
+    top = Layer(c=2.0, phi=33.0, gamma=18.0, name="top")
+    low = Layer(c=4.0, phi=25.0, gamma=22.0, top=[(-50, 5.0), (50, 5.0)], name="low")
+    s = Slope([(-10.0, 0.0), (0.0, 0.0), (10.0, 10.0), (30.0, 10.0)], [top, low])
+    r = le.fellenius_polyline(s, [(0.0, 0.0), (20.0, 10.0)], n=40)
+    th = math.atan(0.5)
+    W = 18.0 * 37.5 + 22.0 * 12.5
+    # weights per layer of base: split the base at x = 10 (y = 5)
+    # part x in [0,10]: column above base from y=x/2 to ground y=x (x<=10)
+    #   lower layer part of it weighs gamma_low*area(y<5) + gamma_top*area(y>5)
+    A_low_lo = 12.5 + 0.0  # region x in [0,10], between base and min(ground,5): tri(0,0),(5,5),(10,5) = 12.5
+    A_top_lo = 50.0 / 2 - 12.5  # region x in [0,10] between base and ground is 25 m^2
+    W_lo = 22.0 * A_low_lo + 18.0 * A_top_lo
+    W_hi = W - W_lo
+    L_half = math.hypot(10.0, 5.0)
+    res = (4.0 * L_half + W_lo * math.cos(th) * tand(25.0)
+           + 2.0 * L_half + W_hi * math.cos(th) * tand(33.0))
+    assert float(np.sum(r.slices.W)) == pytest.approx(W, rel=1e-10)
+    assert r.fs == pytest.approx(res / (W * math.sin(th)), rel=1e-10)
+
+
+def test_wedge_with_horizontal_phreatic_line():
+    """Phreatic line at y = 4: u = gamma_w (4 - y) on the base below it.
+    Hand calculation: sum(u l) = gamma_w * integral over the submerged base
+    of (4 - y) dl = gamma_w * 0.5 * 4 * (4 / sin(theta))."""
+    s = _wedge(phreatic=[(-50.0, 4.0), (50.0, 4.0)])
+    r = le.fellenius_polyline(s, [(0.0, 0.0), (20.0, 10.0)], n=40)
+    th = math.atan(0.5)
+    ul = 9.81 * 0.5 * 4.0 * (4.0 / math.sin(th))
+    fs, N, T = _wedge_hand(10.0, 30.0, 20.0, u_l=ul)
+    assert r.fs == pytest.approx(fs, rel=1e-9)
+    assert r.normal == pytest.approx(N, rel=1e-9)
+
+
+def test_wedge_with_ru():
+    """Pore-pressure ratio: u = ru W / b, so for a single base angle
+    N' = W (cos(theta) - ru / cos(theta)); compared with the hand value."""
+    ru = 0.3
+    s = _wedge(ru=ru)
+    r = le.fellenius_polyline(s, [(0.0, 0.0), (20.0, 10.0)])
+    th = math.atan(0.5)
+    W = 20.0 * 50.0
+    fs, N, T = _wedge_hand(10.0, 30.0, 20.0, u_l=W * ru / math.cos(th))
+    assert r.fs == pytest.approx(fs, rel=1e-10)
+    assert r.normal == pytest.approx(N, rel=1e-10)
+
+
+def test_table2_totals_consistency_c0():
+    """Seed paper Table 2 gives FS from the slip-surface totals; for c = 0
+    the module's FS must equal sum(N') tan(phi) / sum(T) exactly, for a
+    multi-segment (block-joint-like) polyline with varying base angles.
+    (Table 2 itself: 253 kN/m * tan 30 / 231 kN/m = 0.632, printed 0.63.)"""
+    s = _wedge(c=0.0, phi=30.0)
+    slip = [(0.0, 0.0), (6.0, 1.0), (14.0, 4.0), (18.0, 7.0), (20.0, 10.0)]
+    r = le.fellenius_polyline(s, slip, n=60)
+    assert r.fs == pytest.approx(r.normal * tand(30.0) / r.shear, rel=1e-12)
+    assert 253.0 * tand(30.0) / 231.0 == pytest.approx(0.63, abs=0.005)
+    table = le.results_table([r, ("RBSM (paper)", 217.0, 271.0, 0.72)], title="Table 2")
+    assert "Fellenius (polyline)" in table and "217.0" in table and f"{r.fs:8.3f}" in table
+
+
+# ---------------------------------------------------------------------------
+# circles
+# ---------------------------------------------------------------------------
+CIRCLE = Circle(2.0, 15.0, 15.5)
+
+
+def test_bishop_equals_fellenius_for_phi_zero():
+    """For phi = 0, m_alpha = cos(alpha) and Bishop reduces to
+    sum(c l) / sum(W sin alpha), the Fellenius value: both must agree to
+    round-off on the same circle and slices."""
+    s = _wedge(c=30.0, phi=0.0)
+    f = le.fellenius_circle(s, CIRCLE, n=50)
+    b = le.bishop_circle(s, CIRCLE, n=50)
+    assert b.fs == pytest.approx(f.fs, rel=1e-12)
+    assert b.iterations <= 2
+
+
+def test_fs_proportional_to_c_for_phi_zero():
+    """For phi = 0, FS is linear in c: tripling c triples FS (both methods)."""
+    s1 = _wedge(c=10.0, phi=0.0)
+    s3 = _wedge(c=30.0, phi=0.0)
+    for fn in (le.fellenius_circle, le.bishop_circle):
+        assert fn(s3, CIRCLE).fs == pytest.approx(3.0 * fn(s1, CIRCLE).fs, rel=1e-12)
+
+
+def test_fellenius_circle_phi_zero_against_exact_moment_integral():
+    """phi = 0 circle: FS = c R^2 theta / (gamma * first moment of the
+    sliding area about the centre).  The area moment is computed here
+    independently by a fine 2-D grid quadrature of the region between the
+    ground and the circle; with 400 slices the agreement must be 0.2 %."""
+    c, gamma = 30.0, 20.0
+    s = _wedge(c=c, phi=0.0, gamma=gamma)
+    r = le.fellenius_circle(s, CIRCLE, n=400)
+    xe, xx = r.slices.x_entry, r.slices.x_exit
+    ye, yx = float(s.ground(xe)), float(s.ground(xx))
+    ang = lambda x, y: math.atan2(y - CIRCLE.yc, x - CIRCLE.xc)
+    theta = abs(ang(xx, yx) - ang(xe, ye))
+    gx = np.linspace(xe, xx, 1601)
+    gy = np.linspace(-1.0, 11.0, 1601)
+    X, Y = np.meshgrid(0.5 * (gx[1:] + gx[:-1]), 0.5 * (gy[1:] + gy[:-1]))
+    inside = (Y < s.ground(X)) & ((X - CIRCLE.xc) ** 2 + (Y - CIRCLE.yc) ** 2 < CIRCLE.R ** 2)
+    dA = (gx[1] - gx[0]) * (gy[1] - gy[0])
+    moment = abs(float(np.sum((X - CIRCLE.xc)[inside])) * dA)
+    exact = c * CIRCLE.R ** 2 * theta / (gamma * moment)
+    assert r.fs == pytest.approx(exact, rel=2e-3)
+
+
+def test_bishop_solution_satisfies_its_equation():
+    """The converged Bishop FS must satisfy
+    F = sum[(c b + (W - u b) tan phi)/m_alpha(F)] / sum(W sin alpha)
+    to the stated tolerance (recomputed here from the returned slices), and
+    differ from the Fellenius value (phi > 0)."""
+    s = _wedge(c=10.0, phi=30.0, phreatic=[(-50, 3.0), (50, 6.0)])
+    b = le.bishop_circle(s, CIRCLE, n=50, tol=1e-10)
+    sl = b.slices
+    m = np.cos(sl.alpha) + np.sin(sl.alpha) * sl.tan_phi / b.fs
+    F = np.sum((sl.c * sl.b + (sl.W - sl.u * sl.b) * sl.tan_phi) / m) / np.sum(sl.W * np.sin(sl.alpha))
+    assert F == pytest.approx(b.fs, rel=1e-8)
+    f = le.fellenius_circle(s, CIRCLE, n=50)
+    assert abs(b.fs - f.fs) > 0.01
+    assert b.iterations >= 2
+    assert b.resisting == pytest.approx(b.fs * b.shear, rel=1e-12)
+
+
+def test_circle_slice_convergence():
+    """FS with 50 slices within 0.5 % of FS with 800 slices."""
+    s = _wedge()
+    for fn in (le.fellenius_circle, le.bishop_circle):
+        assert fn(s, CIRCLE, n=50).fs == pytest.approx(fn(s, CIRCLE, n=800).fs, rel=5e-3)
+
+
+def test_circle_weight_equals_sliding_area_times_gamma():
+    """sum(W) must equal gamma times the sliding-mass area measured by an
+    independent grid quadrature (0.3 %)."""
+    s = _wedge(gamma=20.0)
+    sl = le.circle_slices(s, CIRCLE, n=200)
+    gx = np.linspace(sl.x_entry, sl.x_exit, 1201)
+    gy = np.linspace(-1.0, 11.0, 1201)
+    X, Y = np.meshgrid(0.5 * (gx[1:] + gx[:-1]), 0.5 * (gy[1:] + gy[:-1]))
+    inside = (Y < s.ground(X)) & ((X - CIRCLE.xc) ** 2 + (Y - CIRCLE.yc) ** 2 < CIRCLE.R ** 2)
+    area = float(np.sum(inside)) * (gx[1] - gx[0]) * (gy[1] - gy[0])
+    assert float(np.sum(sl.W)) == pytest.approx(20.0 * area, rel=3e-3)
+
+
+def test_critical_circle_is_deterministic_and_minimal():
+    """Two identical searches return the same circle; the returned FS is
+    not larger than any circle of the grid evaluated directly."""
+    s = _wedge()
+    a = le.critical_circle(s, (0, 10), (11, 20), nx=5, ny=5, r_range=(8, 20), nr=5, method="fellenius")
+    b = le.critical_circle(s, (0, 10), (11, 20), nx=5, ny=5, r_range=(8, 20), nr=5, method="fellenius")
+    assert (a.circle, a.fs) == (b.circle, b.fs)
+    for xc in np.linspace(0, 10, 5):
+        for yc in np.linspace(11, 20, 5):
+            for R in np.linspace(8, 20, 5):
+                try:
+                    f = le.fellenius_circle(s, (xc, yc, R)).fs
+                except ValueError:
+                    continue
+                assert a.fs <= f + 1e-12
+    assert a.n_valid + a.n_skipped == a.n_tried == 125
+    assert "critical circle" in str(a) and "FS =" in str(a.best)
+
+
+# ---------------------------------------------------------------------------
+# bad input
+# ---------------------------------------------------------------------------
+GOOD_G = [(-10.0, 0.0), (0.0, 0.0), (10.0, 10.0), (30.0, 10.0)]
+
+
+@pytest.mark.parametrize(
+    "kwargs,match",
+    [
+        (dict(c=-1.0, phi=30, gamma=20), "cohesion"),
+        (dict(c=1.0, phi=90.0, gamma=20), "friction angle"),
+        (dict(c=1.0, phi=-1.0, gamma=20), "friction angle"),
+        (dict(c=1.0, phi=30, gamma=-20), "unit weight"),
+        (dict(c=float("nan"), phi=30, gamma=20), "finite"),
+        (dict(c=1.0, phi=float("inf"), gamma=20), "finite"),
+        (dict(c="abc", phi=30, gamma=20), "real number"),
+        (dict(c=1.0, phi=30, gamma=20, top=[(0, 1), (0, 2)]), "strictly increasing"),
+    ],
+)
+def test_bad_layer(kwargs, match):
+    """Layer rejects negative c / gamma, phi outside [0, 90), non-finite or
+    non-numeric values, and a non-monotonic top boundary."""
+    with pytest.raises(ValueError, match=match):
+        Layer(**kwargs)
+
+
+@pytest.mark.parametrize(
+    "surface,kw,match",
+    [
+        ([(0, 0), (5, 1), (3, 2)], {}, "strictly increasing"),
+        ([(0, 0), (0, 1), (3, 2)], {}, "strictly increasing"),
+        ([(0, 0), (5, float("nan"))], {}, "non-finite"),
+        ([(0, 0)], {}, "at least 2"),
+        ([0, 1, 2], {}, r"\(x, y\)"),
+        (GOOD_G, dict(ru=1.2), "ru"),
+        (GOOD_G, dict(ru=0.2, phreatic=[(0, 1), (5, 1)]), "not both"),
+        (GOOD_G, dict(phreatic=[(5, 1), (0, 1)]), "phreatic line"),
+    ],
+)
+def test_bad_slope(surface, kw, match):
+    """Slope rejects non-monotonic / vertical-step / non-finite / too short /
+    malformed ground surfaces, ru outside [0,1), ru together with a phreatic
+    line, and a non-monotonic phreatic line."""
+    with pytest.raises(ValueError, match=match):
+        Slope(surface, Layer(1.0, 30.0, 20.0), **kw)
+
+
+def test_bad_layer_list():
+    """Empty layer list and a lower layer without a top boundary."""
+    with pytest.raises(ValueError, match="at least one layer"):
+        Slope(GOOD_G, [])
+    with pytest.raises(ValueError, match="only the first layer"):
+        Slope(GOOD_G, [Layer(1, 30, 20), Layer(1, 30, 20)])
+
+
+@pytest.mark.parametrize("n", [0, -3, 2.5, True])
+def test_bad_slice_count(n):
+    """Zero, negative, non-integer slice counts are refused."""
+    with pytest.raises(ValueError, match="number of slices"):
+        le.fellenius_circle(_wedge(), CIRCLE, n=n)
+
+
+@pytest.mark.parametrize(
+    "circle,match",
+    [
+        ((5.0, 40.0, 10.0), "misses the slope"),          # entirely above ground
+        ((100.0, 5.0, 10.0), "misses the slope"),         # outside the x range
+        ((10.0, 5.0, 6.0), "does not exit the ground surface twice"),  # centre below the ground
+        ((5.0, 60.0, 61.0), "leaves the ground-surface x range"),      # too big for the model
+        ((5.0, 5.0, -1.0), "radius"),
+        ((float("nan"), 5.0, 3.0), "finite"),
+    ],
+)
+def test_bad_circle(circle, match):
+    """Circles that miss the slope, do not come back up through the ground,
+    run past the ends of the ground definition, or are malformed."""
+    with pytest.raises(ValueError, match=match):
+        le.bishop_circle(_wedge(), circle)
+
+
+def test_circle_cutting_ground_more_than_twice():
+    """A two-hump ground surface cut by one circle gives two separate
+    masses: refused."""
+    s = Slope([(-20, 5), (-5, 5), (0, 0), (5, 5), (20, 5)], Layer(5, 30, 20))
+    with pytest.raises(ValueError, match="more than twice"):
+        le.fellenius_circle(s, (0.0, 20.0, 19.0))
+
+
+def test_bishop_m_alpha_breakdown():
+    """A circle exiting at a very steep negative base angle with high phi
+    drives m_alpha below its limit: a ValueError naming m_alpha."""
+    s = Slope([(-20, 8), (-4, 8), (0, 0), (10, 10), (40, 10)], Layer(0.0, 40.0, 20.0))
+    with pytest.raises(ValueError, match="m_alpha"):
+        le.bishop_circle(s, (-5.0, 10.0, 12.0))
+
+
+@pytest.mark.parametrize(
+    "slip,match",
+    [
+        ([(-5.0, 20.0), (40.0, 30.0)], "misses the slope"),
+        ([(50.0, 0.0), (60.0, 0.0)], "misses the slope"),
+        ([(0.0, 0.0), (20.0, 5.0)], "does not reach the ground"),   # ends inside the slope
+        ([(5.0, 0.0), (2.0, 5.0)], "strictly increasing"),
+        ([(0.0, 0.0), (20.0, float("inf"))], "non-finite"),
+    ],
+)
+def test_bad_polyline(slip, match):
+    """Polyline slip surfaces that miss the slope, stop inside it, are not
+    left-to-right, or contain non-finite points."""
+    with pytest.raises(ValueError, match=match):
+        le.fellenius_polyline(_wedge(), slip)
+
+
+def test_bad_search_arguments():
+    """critical_circle: unknown method, both/neither radius definitions,
+    empty search space."""
+    s = _wedge()
+    with pytest.raises(ValueError, match="method"):
+        le.critical_circle(s, (0, 1), (20, 21), through=(0, 0), method="janbu")
+    with pytest.raises(ValueError, match="exactly one"):
+        le.critical_circle(s, (0, 1), (20, 21))
+    with pytest.raises(ValueError, match="no valid trial circle"):
+        le.critical_circle(s, (100, 110), (50, 60), nx=3, ny=3, r_range=(1, 2), nr=2)
