@@ -24,7 +24,10 @@ def tand(a):
 def _verruijt_slope():
     # homogeneous slope, height 4.5 m, inclination 1:2 (vertical:horizontal),
     # on a 2 m foundation of the same soil (model 18 m wide, 6.5 m high);
-    # toe at (0, 0), crest at (9, 4.5).
+    # toe at (0, 0), crest at (9, 4.5).  The source text does not give the
+    # horizontal position of the slope inside the 18 m model: 4 m in front
+    # of the toe and 5 m behind the crest are chosen here (the critical
+    # circle, exiting ~1.3 m behind the crest, stays well inside).
     return Slope(
         [(-4.0, 0.0), (0.0, 0.0), (9.0, 4.5), (14.0, 4.5)],
         Layer(c=5.0, phi=20.0, gamma=16.0, name="slope"),
