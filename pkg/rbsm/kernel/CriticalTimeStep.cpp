@@ -56,30 +56,34 @@ Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::v
 	forEachContactStiffness(bodies, contacts, [&](const DynContact& c, const Eigen::Matrix<Real, 6, 6>& K) {
 		diag[c.body1] += K.block<3, 3>(0, 0);
 		diag[c.body2] += K.block<3, 3>(3, 3);
-		if (c.body1 < c.body2) off[{ c.body1, c.body2 }] += K.block<3, 3>(0, 3);
-		else off[{ c.body2, c.body1 }] += K.block<3, 3>(3, 0);
+		// (Eigen matrices are not zero-initialised: insert an explicit zero first.)
+		const bool fwd = c.body1 < c.body2;
+		auto       it  = off.try_emplace(fwd ? std::make_pair(c.body1, c.body2) : std::make_pair(c.body2, c.body1), Mat3::Zero()).first;
+		it->second += fwd ? Mat3(K.block<3, 3>(0, 3)) : Mat3(K.block<3, 3>(3, 0));
 	});
-	auto massOf = [&](size_t b, int i) { return i < 2 ? bodies[b].mass : bodies[b].inertia; };
-	// Row sums of |S| = |K_ij| / sqrt(M_i M_j), rows of free bodies only (fixed DOFs removed).
-	std::vector<Eigen::Vector3d> row(n, Eigen::Vector3d::Zero());
+	// Scale to S = M^-1/2 K M^-1/2 block by block.
+	auto isq = [&](size_t b) { return Eigen::Vector3d(1 / std::sqrt(bodies[b].mass), 1 / std::sqrt(bodies[b].mass), 1 / std::sqrt(bodies[b].inertia)); };
+	// Block Gershgorin bound for the rows of each free body b:
+	//   lambda_max <= max_b [ lambda_max(S_bb) + sum_{c != b, free} ||S_bc||_2 ].
+	std::vector<Real> bound(n, 0);
 	for (size_t b = 0; b < n; ++b) {
 		if (bodies[b].fixed) continue;
-		for (int i = 0; i < 3; ++i)
-			for (int j = 0; j < 3; ++j) row[b][i] += std::abs(diag[b](i, j)) / std::sqrt(massOf(b, i) * massOf(b, j));
+		const Mat3                                     Sbb = isq(b).asDiagonal() * diag[b] * isq(b).asDiagonal();
+		Eigen::SelfAdjointEigenSolver<Mat3>            es(Sbb, Eigen::EigenvaluesOnly);
+		bound[b] = std::max(Real(0), es.eigenvalues().maxCoeff());
 	}
 	for (const auto& kv : off) {
 		const int a = kv.first.first, b = kv.first.second;
-		if (bodies[a].fixed || bodies[b].fixed) continue;
-		for (int i = 0; i < 3; ++i)
-			for (int j = 0; j < 3; ++j) {
-				const Real s = std::abs(kv.second(i, j)) / std::sqrt(massOf(a, i) * massOf(b, j));
-				row[a][i] += s; // S_ab(i,j) in row i of a
-				row[b][j] += s; // symmetric entry S_ba(j,i) in row j of b
-			}
+		if (bodies[a].fixed || bodies[b].fixed) continue; // fixed DOFs are removed from the system
+		const Mat3                                     Sab = isq(a).asDiagonal() * kv.second * isq(b).asDiagonal();
+		Eigen::SelfAdjointEigenSolver<Mat3>            es(Sab.transpose() * Sab, Eigen::EigenvaluesOnly);
+		const Real                                     norm2 = std::sqrt(std::max(Real(0), es.eigenvalues().maxCoeff()));
+		bound[a] += norm2; // ||S_ab|| = ||S_ba||
+		bound[b] += norm2;
 	}
 	Real lmax = 0;
 	for (size_t b = 0; b < n; ++b)
-		if (!bodies[b].fixed) lmax = std::max(lmax, row[b].maxCoeff());
+		if (!bodies[b].fixed) lmax = std::max(lmax, bound[b]);
 	return lmax > 0 ? 2 / std::sqrt(lmax) : std::numeric_limits<Real>::infinity();
 }
 
