@@ -1,0 +1,50 @@
+#include <pkg/rbsm/Polygon2D.hpp>
+#include <pkg/rbsm/kernel/ConvexPolygon.hpp>
+
+#include <stdexcept>
+
+namespace yade {
+
+YADE_PLUGIN((Polygon2D));
+
+void Polygon2D::postLoad(Polygon2D& p)
+{
+	if (p.vertices.empty()) { // a default-constructed shape, not yet given its vertices
+		p.area = p.polarMoment = p.circumradius = 0;
+		return;
+	}
+	const std::vector<rbsm::Vec2> v(p.vertices.begin(), p.vertices.end());
+	const std::string problem = rbsm::polygonProblem(v);
+	if (!problem.empty()) throw std::invalid_argument("Polygon2D.vertices: " + problem);
+	const rbsm::MassProperties mp = rbsm::massProperties(v);
+	// Off-centre vertices would put the centre of mass away from State::pos: refuse them rather
+	// than silently produce wrong dynamics. Tolerance relative to the polygon size.
+	const Real size = rbsm::polygonSize(v);
+	if (mp.centroid.norm() > 1e-9 * size)
+		throw std::invalid_argument(
+		        "Polygon2D.vertices: the centroid must be at the origin of the body frame, it is at (" + std::to_string(mp.centroid.x()) + ", "
+		        + std::to_string(mp.centroid.y()) + "); yade_rbsm.polygon2d() builds a body from world-frame vertices");
+	p.area         = mp.area;
+	p.polarMoment  = mp.polarMoment;
+	p.circumradius = 0;
+	for (const auto& x : v)
+		p.circumradius = std::max(p.circumradius, x.norm());
+}
+
+Vector2r Polygon2D::worldVertex(size_t i, const Vector2r& pos, Real angle) const
+{
+	const Real c = std::cos(angle), s = std::sin(angle);
+	const auto& v = vertices[i];
+	return pos + Vector2r(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+}
+
+std::vector<Vector2r> Polygon2D::pyWorldVertices(const Vector3r& pos, const Quaternionr& ori) const
+{
+	std::vector<Vector2r> out;
+	out.reserve(vertices.size());
+	for (size_t i = 0; i < vertices.size(); i++)
+		out.push_back(worldVertex(i, pos.head<2>(), planarAngle(ori)));
+	return out;
+}
+
+} // namespace yade

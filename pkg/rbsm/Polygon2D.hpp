@@ -1,0 +1,45 @@
+// Polygon2D: the shape of an RBSM block, a rigid convex polygon in the x-y plane.
+#pragma once
+#include <core/Shape.hpp>
+
+namespace yade {
+
+/* The vertices are given in the body's local frame, counter-clockwise, with the centroid at the
+ * origin, so that State::pos is the block's centre of mass and State::ori (a rotation about z) its
+ * orientation. Derived quantities (area, polar moment) are per unit thickness and unit density;
+ * yade_rbsm.polygon2d() turns world-frame vertices into a body with mass and inertia. */
+class Polygon2D : public Shape {
+public:
+	//! Vertex i in world coordinates (x, y) for a body at pos with rotation angle about z.
+	Vector2r worldVertex(size_t i, const Vector2r& pos, Real angle) const;
+	//! Checks the vertices and computes the derived quantities; throws std::invalid_argument naming the problem.
+	void postLoad(Polygon2D&);
+	//! Python: world vertices of this shape for the given body state.
+	std::vector<Vector2r> pyWorldVertices(const Vector3r& pos, const Quaternionr& ori) const;
+
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Polygon2D, Shape,
+		"Rigid convex polygon in the x-y plane: the block of the Rigid-Bodies-Spring Model (Kawai 1977). "
+		"Its motion is planar: x, y translation and rotation about z (yade_rbsm.polygon2d blocks 'zXY').",
+		((std::vector<Vector2r>, vertices, , Attr::triggerPostLoad,
+			"Vertices [m] in the body's local frame: convex, counter-clockwise, centroid at the origin. "
+			"Setting them checks the polygon and updates :yref:`area<Polygon2D.area>` and :yref:`polarMoment<Polygon2D.polarMoment>`; "
+			"a non-convex, clockwise, degenerate or off-centre polygon raises ValueError."))
+		((Real, area, 0, (Attr::readonly | Attr::noSave), "Area [m²] (derived from vertices)."))
+		((Real, polarMoment, 0, (Attr::readonly | Attr::noSave),
+			"Polar second moment of area about the centroid, J = ∫(x²+y²)dA [m⁴] (derived); "
+			"the polar inertia of a block is density·thickness·J [kg·m²]."))
+		((Real, circumradius, 0, (Attr::readonly | Attr::noSave), "Largest distance of a vertex from the centroid [m] (derived).")),
+		/*ctor*/ createIndex();,
+		/*py*/ .def("worldVertices", &Polygon2D::pyWorldVertices, (boost::python::arg("pos"), boost::python::arg("ori")),
+			"World coordinates of the vertices for a body at *pos* with orientation *ori* (e.g. ``b.state.pos, b.state.ori``).")
+	);
+	// clang-format on
+	REGISTER_CLASS_INDEX(Polygon2D, Shape);
+};
+REGISTER_SERIALIZABLE(Polygon2D);
+
+//! Rotation angle about z of a planar orientation (rad, counter-clockwise).
+inline Real planarAngle(const Quaternionr& q) { return 2 * std::atan2(q.z(), q.w()); }
+
+} // namespace yade
