@@ -1,0 +1,20 @@
+# rbsm_add_pytest(<name> <test file> [ENVIRONMENT VAR=value ...] [DEPENDS_LAUNCHER])
+# Registers a pytest file as one ctest test, run by Debian's /usr/bin/python3 (the interpreter
+# YADE's Python package and pytest are installed for). ctest stays the single entry point.
+set(RBSM_PYTHON /usr/bin/python3 CACHE FILEPATH "Debian's python3 (runs the pytest suites)")
+
+function(rbsm_add_pytest name file)
+  cmake_parse_arguments(ARG "" "TIMEOUT" "ENVIRONMENT;LABELS" ${ARGN})
+  get_filename_component(abs "${file}" ABSOLUTE)
+  get_filename_component(dir "${abs}" DIRECTORY)
+  add_test(NAME ${name}
+    COMMAND ${RBSM_PYTHON} -m pytest -q -rfEs -p no:cacheprovider "${abs}"
+    WORKING_DIRECTORY "${dir}")
+  if(NOT ARG_TIMEOUT)
+    set(ARG_TIMEOUT 600)
+  endif()
+  set_tests_properties(${name} PROPERTIES
+    TIMEOUT ${ARG_TIMEOUT}
+    LABELS "${ARG_LABELS}"
+    ENVIRONMENT "PYTHONDONTWRITEBYTECODE=1;RBSM_SOURCE_DIR=${PROJECT_SOURCE_DIR};RBSM_BUILD_DIR=${PROJECT_BINARY_DIR};${ARG_ENVIRONMENT}")
+endfunction()
