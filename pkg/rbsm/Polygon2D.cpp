@@ -1,6 +1,7 @@
 #include <pkg/rbsm/Polygon2D.hpp>
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace yade {
@@ -9,6 +10,8 @@ YADE_PLUGIN((Polygon2D));
 
 void Polygon2D::postLoad(Polygon2D& p)
 {
+	if (!(std::isfinite(p.thickness) && p.thickness > 0))
+		throw std::invalid_argument("Polygon2D.thickness: must be a finite number > 0 (got " + std::to_string(p.thickness) + ")");
 	if (p.vertices.empty()) { // a default-constructed shape, not yet given its vertices
 		p.area = p.polarMoment = p.circumradius = 0;
 		return;

@@ -25,6 +25,7 @@ public:
 			"Vertices [m] in the body's local frame: convex, counter-clockwise, centroid at the origin. "
 			"Setting them checks the polygon and updates :yref:`area<Polygon2D.area>` and :yref:`polarMoment<Polygon2D.polarMoment>`; "
 			"a non-convex, clockwise, degenerate or off-centre polygon raises ValueError."))
+		((Real, thickness, 1, Attr::triggerPostLoad, "Out-of-plane thickness [m] (> 0); 1 m gives forces and masses per metre of width, as in plane-strain slope analysis."))
 		((Real, area, 0, (Attr::readonly | Attr::noSave), "Area [m²] (derived from vertices)."))
 		((Real, polarMoment, 0, (Attr::readonly | Attr::noSave),
 			"Polar second moment of area about the centroid, J = ∫(x²+y²)dA [m⁴] (derived); "

@@ -1,0 +1,26 @@
+#include <pkg/rbsm/Bo1_Polygon2D_Aabb.hpp>
+
+namespace yade {
+
+YADE_PLUGIN((Bo1_Polygon2D_Aabb));
+
+void Bo1_Polygon2D_Aabb::go(const shared_ptr<Shape>& shape, shared_ptr<Bound>& bound, const Se3r& se3, const Body* body)
+{
+	const Polygon2D& p = static_cast<const Polygon2D&>(*shape);
+	if (p.vertices.empty()) throw std::runtime_error("Bo1_Polygon2D_Aabb: body #" + std::to_string(body ? body->id : -1) + " has a Polygon2D without vertices");
+	if (!(enlarge >= 0)) throw std::invalid_argument("Bo1_Polygon2D_Aabb.enlarge: must be >= 0");
+	if (!bound) bound = shared_ptr<Bound>(new Aabb);
+	const Real angle = planarAngle(se3.orientation);
+	const Real c = std::cos(angle), s = std::sin(angle);
+	Vector2r   lo = Vector2r::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;
+	for (const Vector2r& v : p.vertices) {
+		const Vector2r w(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+		lo = lo.cwiseMin(w);
+		hi = hi.cwiseMax(w);
+	}
+	const Vector3r pos = se3.position;
+	bound->min         = Vector3r(pos.x() + lo.x() - enlarge, pos.y() + lo.y() - enlarge, pos.z() - 0.5 * p.thickness);
+	bound->max         = Vector3r(pos.x() + hi.x() + enlarge, pos.y() + hi.y() + enlarge, pos.z() + 0.5 * p.thickness);
+}
+
+} // namespace yade

@@ -1,0 +1,116 @@
+#include <pkg/rbsm/Ig2_Polygon2D_Polygon2D_RbsmGeom.hpp>
+#include <pkg/rbsm/kernel/ConvexPolygon.hpp>
+#include <pkg/rbsm/kernel/EdgeContact.hpp>
+#include <pkg/rbsm/kernel/KawaiSprings.hpp>
+
+#include <limits>
+
+namespace yade {
+
+YADE_PLUGIN((RbsmGeom)(Ig2_Polygon2D_Polygon2D_RbsmGeom));
+
+namespace {
+	// World vertices into a reusable buffer (one per thread: InteractionLoop runs functors in parallel).
+	void worldVertices(const Polygon2D& shape, const State& state, std::vector<rbsm::Vec2>& out)
+	{
+		const Real angle = planarAngle(state.ori);
+		const Real c = std::cos(angle), s = std::sin(angle);
+		out.resize(shape.vertices.size());
+		for (size_t i = 0; i < shape.vertices.size(); i++) {
+			const Vector2r& v = shape.vertices[i];
+			out[i]            = rbsm::Vec2(state.pos.x() + c * v.x() - s * v.y(), state.pos.y() + s * v.x() + c * v.y());
+		}
+	}
+
+	bool isFixed(const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL; }
+
+	Real reducedMass(const State& a, const State& b)
+	{
+		const bool fa = isFixed(a) || !(a.mass > 0), fb = isFixed(b) || !(b.mass > 0);
+		if (fa && fb) return 0;
+		if (fa) return b.mass;
+		if (fb) return a.mass;
+		return a.mass * b.mass / (a.mass + b.mass);
+	}
+
+	// Velocity of the material point x of a planar rigid body: v + ω × (x − c).
+	Vector2r pointVelocity(const State& s, const Vector2r& x)
+	{
+		const Vector2r r = x - s.pos.head<2>();
+		return s.vel.head<2>() + s.angVel.z() * Vector2r(-r.y(), r.x());
+	}
+}
+
+bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
+        const shared_ptr<Shape>& s1,
+        const shared_ptr<Shape>& s2,
+        const State&             state1,
+        const State&             state2,
+        const Vector3r&          shift2,
+        const bool&              force,
+        const shared_ptr<Interaction>& I)
+{
+	if (shift2 != Vector3r::Zero()) throw std::runtime_error("Ig2_Polygon2D_Polygon2D_RbsmGeom: periodic cells are not supported");
+	const Polygon2D& A = static_cast<const Polygon2D&>(*s1);
+	const Polygon2D& B = static_cast<const Polygon2D&>(*s2);
+	if (A.vertices.empty() || B.vertices.empty())
+		throw std::runtime_error(
+		        "Ig2_Polygon2D_Polygon2D_RbsmGeom: body #" + std::to_string(A.vertices.empty() ? I->getId1() : I->getId2())
+		        + " has a Polygon2D without vertices");
+
+	thread_local std::vector<rbsm::Vec2> va, vb;
+	worldVertices(A, state1, va);
+	worldVertices(B, state2, vb);
+
+	const bool       existing = I->geom && !force;
+	RbsmGeom*        g        = existing ? static_cast<RbsmGeom*>(I->geom.get()) : nullptr;
+	rbsm::ContactHint hint;
+	if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
+	// A joint that exists is followed while it opens (its springs may hold tension until they
+	// break); the law removes it when it carries nothing. New contacts need touch or closeness.
+	const Real maxSeparation = existing ? A.circumradius + B.circumradius : interactionDistance;
+	const rbsm::EdgeContact c = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis);
+	if (!c.touching || (!existing && !(c.length > 0))) return false;
+
+	if (!g) {
+		if (nIP < 1 || nIP > 8) throw std::invalid_argument("Ig2_Polygon2D_Polygon2D_RbsmGeom.nIP: must be 1..8 (got " + std::to_string(nIP) + ")");
+		auto geom = shared_ptr<RbsmGeom>(new RbsmGeom);
+		rbsm::integrationPoints(nIP, geom->positions, geom->weights);
+		geom->thickness   = std::min(A.thickness, B.thickness);
+		geom->reducedMass = reducedMass(state1, state2);
+		I->geom           = geom;
+		g                 = geom.get();
+	}
+	g->normal     = c.normal;
+	g->tangent    = c.tangent;
+	g->p0         = c.p0;
+	g->p1         = c.p1;
+	g->length     = c.length;
+	g->separation = c.separation;
+	g->refBody    = c.refBody;
+	g->refEdge    = c.refEdge;
+	g->centroid1  = state1.pos.head<2>();
+	g->centroid2  = state2.pos.head<2>();
+	g->h1         = rbsm::distanceToLine(g->centroid1, c.p0, c.normal);
+	g->h2         = rbsm::distanceToLine(g->centroid2, c.p0, c.normal);
+
+	const size_t n  = g->weights.size();
+	const Real   dt = scene->dt;
+	g->deltaN.resize(n);
+	g->shearIncrement.resize(n);
+	g->normalVelocity.resize(n);
+	g->shearVelocity.resize(n);
+	for (size_t k = 0; k < n; k++) {
+		const Real     s = g->positions[k];
+		const Vector2r x = g->point(int(k));
+		// overlap is linear between the segment ends because both block boundaries are straight
+		g->deltaN[k]            = (1 - s) * c.d0 + s * c.d1;
+		const Vector2r vRel     = pointVelocity(state2, x) - pointVelocity(state1, x);
+		g->normalVelocity[k]    = -vRel.dot(g->normal); // closing is positive, like the overlap
+		g->shearVelocity[k]     = vRel.dot(g->tangent);
+		g->shearIncrement[k]    = g->shearVelocity[k] * dt;
+	}
+	return true;
+}
+
+} // namespace yade

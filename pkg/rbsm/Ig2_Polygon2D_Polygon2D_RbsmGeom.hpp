@@ -1,0 +1,40 @@
+// Ig2_Polygon2D_Polygon2D_RbsmGeom: builds and updates RbsmGeom for two Polygon2D blocks.
+#pragma once
+#include <core/Dispatching.hpp>
+#include <pkg/rbsm/Polygon2D.hpp>
+#include <pkg/rbsm/RbsmGeom.hpp>
+
+namespace yade {
+
+class Ig2_Polygon2D_Polygon2D_RbsmGeom : public IGeomFunctor {
+public:
+	bool go(const shared_ptr<Shape>& s1,
+	        const shared_ptr<Shape>& s2,
+	        const State&             state1,
+	        const State&             state2,
+	        const Vector3r&          shift2,
+	        const bool&              force,
+	        const shared_ptr<Interaction>& I) override;
+	bool goReverse(const shared_ptr<Shape>&, const shared_ptr<Shape>&, const State&, const State&, const Vector3r&, const bool&, const shared_ptr<Interaction>&) override
+	{
+		throw std::logic_error("Ig2_Polygon2D_Polygon2D_RbsmGeom::goReverse called: the functor is symmetric and must not be reversed");
+	}
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ig2_Polygon2D_Polygon2D_RbsmGeom, IGeomFunctor,
+		"Edge-to-edge contact of two :yref:`Polygon2D` blocks (RBSM, seed paper Fig. 3 and eq. 8-9): separating-axis search "
+		"for the reference edge, clipping of the facing edge, integration points along the contact segment. A new contact "
+		"is made when the blocks overlap or are closer than :yref:`interactionDistance<Ig2_Polygon2D_Polygon2D_RbsmGeom.interactionDistance>`; "
+		"an existing one is kept (also open, in tension) until the law removes it.",
+		((int, nIP, 2, , "Integration points per contact (1-8, Gauss-Legendre). 2 integrates the force and moment of the linear traction of two rigid blocks exactly; more points resolve partial slip and partial opening along a joint."))
+		((Real, interactionDistance, 0, , "Largest gap [m] at which a new contact is made (0: touching or overlapping)."))
+		((Real, hysteresis, 1e-3, , "Relative margin (fraction of the smaller block size) by which another edge must be better before the reference edge of a contact changes; avoids flip-flopping between the two sides of a shared edge.")),
+		/*ctor*/,
+		/*py*/
+	);
+	// clang-format on
+	FUNCTOR2D(Polygon2D, Polygon2D);
+	DEFINE_FUNCTOR_ORDER_2D(Polygon2D, Polygon2D);
+};
+REGISTER_SERIALIZABLE(Ig2_Polygon2D_Polygon2D_RbsmGeom);
+
+} // namespace yade

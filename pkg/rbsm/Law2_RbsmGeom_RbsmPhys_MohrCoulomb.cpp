@@ -1,0 +1,80 @@
+#include <pkg/rbsm/Law2_RbsmGeom_RbsmPhys_MohrCoulomb.hpp>
+#include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
+
+namespace yade {
+
+YADE_PLUGIN((Law2_RbsmGeom_RbsmPhys_MohrCoulomb));
+
+namespace {
+	inline Real cross(const Vector2r& a, const Vector2r& b) { return a.x() * b.y() - a.y() * b.x(); }
+}
+
+bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
+{
+	RbsmGeom& g = static_cast<RbsmGeom&>(*ig);
+	RbsmPhys& p = static_cast<RbsmPhys&>(*ip);
+	const size_t n = g.nPoints();
+
+	const rbsm::JointParams params { p.kn, p.ks, p.cohesion, p.tanPhi, p.tensileStrength };
+	const Real              area = g.length * g.thickness; // area of the whole joint [m²]
+	// Viscous damping: ξ times the critical coefficient of the joint's normal spring acting on the
+	// reduced mass, 2·sqrt(kn·A·m), spread over the joint area (traction per velocity).
+	const bool damped = dampingRatio > 0 && g.reducedMass > 0 && area > 0;
+	p.dampingCoefficient = damped ? dampingRatio * 2 * std::sqrt(p.kn * area * g.reducedMass) / area : 0;
+
+	Vector2r force = Vector2r::Zero(); // on body 2
+	Real     torque1 = 0, torque2 = 0;
+	Real     elastic = 0, dissipated = 0, viscous = 0, normalForce = 0, shearForce = 0, strength = 0;
+	bool     carries = false;
+	for (size_t k = 0; k < n; k++) {
+		const Real           a = g.weights[k] * area;
+		rbsm::JointPointState st { p.shearTraction[k], p.intact[k], p.slipping[k], p.open[k] };
+		const rbsm::JointPointResult r = rbsm::updateJointPoint(st, params, g.deltaN[k], g.shearIncrement[k], a);
+		p.shearTraction[k]  = st.shearTraction;
+		p.intact[k]         = st.intact;
+		p.slipping[k]       = st.slipping;
+		p.open[k]           = st.open;
+		p.normalTraction[k] = r.normalTraction;
+		Real fn = r.normalForce, fs = r.shearForce;
+		if (damped && !st.open) { // no damping force across an open joint
+			// shear damping only on the elastic branch: a slipping point is at its frictional limit
+			const Real dn = p.dampingCoefficient * g.normalVelocity[k] * a;
+			const Real ds = st.slipping ? 0 : -p.dampingCoefficient * g.shearVelocity[k] * a;
+			fn += dn;
+			fs += ds;
+			viscous += (dn * g.normalVelocity[k] - ds * g.shearVelocity[k]) * scene->dt;
+		}
+		carries = carries || !st.open;
+		const Vector2r f = fn * g.normal + fs * g.tangent;
+		const Vector2r x = g.point(int(k));
+		force += f;
+		torque1 -= cross(x - g.centroid1, f);
+		torque2 += cross(x - g.centroid2, f);
+		elastic += r.elasticEnergy;
+		dissipated += r.dissipated;
+		normalForce += r.normalForce;
+		shearForce += r.shearForce;
+		strength += ((st.intact ? p.cohesion : 0) + std::max<Real>(0, r.normalTraction) * p.tanPhi) * a;
+	}
+	p.normalForce = normalForce;
+	p.shearForce  = shearForce;
+	p.strength    = strength;
+	p.plasticDissipation += dissipated;
+
+	if (!carries && g.separation > 0) return false; // open everywhere and apart: the joint is gone
+
+	const Vector3r f3(force.x(), force.y(), 0);
+	scene->forces.addForce(I->getId1(), -f3);
+	scene->forces.addForce(I->getId2(), f3);
+	scene->forces.addTorque(I->getId1(), Vector3r(0, 0, torque1));
+	scene->forces.addTorque(I->getId2(), Vector3r(0, 0, torque2));
+
+	if (scene->trackEnergy) {
+		scene->energy->add(elastic, "elastPotential", elastPotentialIx, /*reset every step*/ true);
+		if (dissipated != 0) scene->energy->add(dissipated, "plastDissip", plastDissipIx, /*cumulative*/ false);
+		if (viscous != 0) scene->energy->add(viscous, "viscDamp", viscDampIx, /*cumulative*/ false);
+	}
+	return true;
+}
+
+} // namespace yade

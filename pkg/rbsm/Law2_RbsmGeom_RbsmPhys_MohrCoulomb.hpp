@@ -1,0 +1,35 @@
+// Law2_RbsmGeom_RbsmPhys_MohrCoulomb: forces of the RBSM joint springs with Mohr-Coulomb slip.
+#pragma once
+#include <core/Dispatching.hpp>
+#include <pkg/rbsm/RbsmGeom.hpp>
+#include <pkg/rbsm/RbsmPhys.hpp>
+
+namespace yade {
+
+class Law2_RbsmGeom_RbsmPhys_MohrCoulomb : public LawFunctor {
+public:
+	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_RbsmGeom_RbsmPhys_MohrCoulomb, LawFunctor,
+		"Contact law of the Rigid-Bodies-Spring Model (seed paper eq. 10-11). At each integration point k of the joint:\n\n"
+		"* σn = kn·δn (δn total overlap from the geometry, > 0 compression) and τ ← τ − ks·Δus (incremental shear);\n"
+		"* tension cut-off: an intact point with σn < −σt breaks irreversibly (c, σt → 0) and opens; a broken point with "
+		"δn ≤ 0 is open and carries nothing;\n"
+		"* Mohr-Coulomb: |τ| ≤ c + σn tanφ; beyond it an intact point breaks (c → 0) and τ returns to ±σn tanφ (slip).\n\n"
+		"The tractions, times the tributary area w_k·ℓ·thickness, give a force and a moment on each block (force on body 2 "
+		"= Σ (σn n + τ t) a_k, opposite on body 1). With O.trackEnergy: 'elastPotential' (spring energy) and 'plastDissip' "
+		"(slip dissipation), plus 'viscDamp' if dampingRatio > 0. A joint that is open everywhere and separated is removed.",
+		((Real, dampingRatio, 0, , "Viscous contact damping as a fraction of critical damping of the joint (normal and shear), ξ; 0 disables it (no cost)."))
+		((int, plastDissipIx, -1, (Attr::hidden | Attr::noSave), "Index of plastDissip in O.energy."))
+		((int, elastPotentialIx, -1, (Attr::hidden | Attr::noSave), "Index of elastPotential in O.energy."))
+		((int, viscDampIx, -1, (Attr::hidden | Attr::noSave), "Index of viscDamp in O.energy.")),
+		/*ctor*/,
+		/*py*/
+	);
+	// clang-format on
+	FUNCTOR2D(RbsmGeom, RbsmPhys);
+	DEFINE_FUNCTOR_ORDER_2D(RbsmGeom, RbsmPhys);
+};
+REGISTER_SERIALIZABLE(Law2_RbsmGeom_RbsmPhys_MohrCoulomb);
+
+} // namespace yade

@@ -1,0 +1,32 @@
+// RbsmMat: material of RBSM blocks and of the joints between them.
+#pragma once
+#include <core/Material.hpp>
+
+namespace yade {
+
+class RbsmMat : public Material {
+public:
+	//! Checks every value; throws std::invalid_argument naming the attribute and the problem.
+	void postLoad(RbsmMat&);
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RbsmMat, Material,
+		"Material of Rigid-Bodies-Spring Model blocks (Kawai 1977): elastic constants of the blocks, which set the "
+		"stiffness of the joint springs (see :yref:`Ip2_RbsmMat_RbsmMat_RbsmPhys`), and the Mohr-Coulomb strength of "
+		"the joints: f = τ² − (c + σn·tanφ)² with σn > 0 in compression (the seed paper's eq. 11 with its tension-positive σ). "
+		"Units SI: Pa, kg/m³, radians.",
+		((Real, young, 1e9, Attr::triggerPostLoad, "Young's modulus E of the blocks [Pa]."))
+		((Real, poisson, 0.2, Attr::triggerPostLoad, "Poisson's ratio ν of the blocks [-]; in (−1, 0.5)."))
+		((bool, planeStrain, true, Attr::triggerPostLoad,
+			"2D state used by Kawai's spring formulas: plane strain (True, slopes and long structures) or plane stress (False, thin plates)."))
+		((Real, frictionAngle, 0.5, Attr::triggerPostLoad, "Joint friction angle φ [rad], in [0, π/2)."))
+		((Real, cohesion, 0, Attr::triggerPostLoad, "Cohesion c of intact joints [Pa] (≥ 0); lost when the joint breaks."))
+		((Real, tensileStrength, 0, Attr::triggerPostLoad, "Tensile strength σt of intact joints [Pa] (≥ 0); lost when the joint breaks.")),
+		/*ctor*/ createIndex(); density = 2600;,
+		/*py*/
+	);
+	// clang-format on
+	REGISTER_CLASS_INDEX(RbsmMat, Material);
+};
+REGISTER_SERIALIZABLE(RbsmMat);
+
+} // namespace yade

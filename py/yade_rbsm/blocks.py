@@ -1,0 +1,79 @@
+"""Building RBSM blocks (Polygon2D bodies) from world-frame polygons."""
+import math
+
+from yade import wrapper
+
+__all__ = ["polygon_properties", "polygon2d"]
+
+
+def polygon_properties(vertices):
+    """Area, centroid and polar second moment J about the centroid of a polygon given
+    counter-clockwise (shoelace formulas; J = ∫(x²+y²)dA, m⁴). Coordinates relative to the
+    first vertex keep round-off small far from the origin."""
+    n = len(vertices)
+    ox, oy = vertices[0]
+    a2 = cx = cy = j = 0.0
+    for i in range(n):
+        x0, y0 = vertices[i][0] - ox, vertices[i][1] - oy
+        x1, y1 = vertices[(i + 1) % n][0] - ox, vertices[(i + 1) % n][1] - oy
+        c = x0 * y1 - x1 * y0
+        a2 += c
+        cx += c * (x0 + x1)
+        cy += c * (y0 + y1)
+        j += c * (x0 * x0 + x0 * x1 + x1 * x1 + y0 * y0 + y0 * y1 + y1 * y1)
+    area = a2 / 2.0
+    if area == 0:
+        raise ValueError("polygon2d: degenerate polygon (zero area)")
+    cx, cy = cx / (6 * area), cy / (6 * area)
+    j = j / 12.0 - area * (cx * cx + cy * cy)
+    return area, (cx + ox, cy + oy), j
+
+
+def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=False):
+    """A YADE Body for an RBSM block.
+
+    *vertices*: convex polygon in world coordinates (x, y) [m], counter-clockwise.
+    *material*: an :yref:`RbsmMat` (or the id/label of one in O.materials).
+    *thickness*: out-of-plane thickness [m]; 1 gives masses and forces per metre of width.
+    *fixed*: a fixed block (foundation, wall): all degrees of freedom blocked.
+
+    The body is placed at the centroid with the vertices centred on it; mass = density·area·thickness,
+    polar inertia = density·thickness·J. Motion is planar: z translation and x, y rotations are
+    blocked ('zXY'). A non-convex, clockwise or degenerate polygon, a material that is not an
+    RbsmMat, or a non-positive density or thickness raises ValueError naming the problem.
+    """
+    mat = material
+    if isinstance(mat, (int, str)):
+        from yade import O
+        mat = wrapper.Material.byLabel(mat) if isinstance(mat, str) else O.materials[mat]
+    if not isinstance(mat, wrapper.RbsmMat):
+        raise ValueError("polygon2d: material must be an RbsmMat, got %s" % type(mat).__name__)
+    if not (isinstance(thickness, (int, float)) and math.isfinite(thickness) and thickness > 0):
+        raise ValueError("polygon2d: thickness must be a finite number > 0, got %r" % (thickness,))
+    if not (math.isfinite(mat.density) and mat.density > 0):
+        raise ValueError("polygon2d: material density must be > 0, got %r" % mat.density)
+    try:
+        pts = [(float(x), float(y)) for x, y in vertices]
+    except (TypeError, ValueError):
+        raise ValueError("polygon2d: vertices must be a sequence of (x, y) pairs")
+    if len(pts) < 3:
+        raise ValueError("polygon2d: a polygon needs at least 3 vertices, got %d" % len(pts))
+    if not all(math.isfinite(c) for p in pts for c in p):
+        raise ValueError("polygon2d: vertices contain NaN or inf")
+    area, (cx, cy), j = polygon_properties(pts)
+    # Polygon2D checks convexity, orientation and degeneracy and names the problem (ValueError).
+    shape = wrapper.Polygon2D(vertices=[(x - cx, y - cy) for x, y in pts], thickness=thickness, wire=wire)
+    if color is not None:
+        shape.color = color
+    b = wrapper.Body()
+    b.shape = shape
+    b.material = mat
+    b.state.pos = (cx, cy, 0)
+    mass = mat.density * shape.area * thickness
+    inertia = mat.density * thickness * shape.polarMoment
+    b.state.mass = mass
+    # Rotation about x and y is blocked; equal components keep NewtonIntegrator on its spherical
+    # (leapfrog) rotation update, which is exact for rotation about a fixed axis.
+    b.state.inertia = (inertia, inertia, inertia)
+    b.state.blockedDOFs = "xyzXYZ" if fixed else "zXY"
+    return b
