@@ -5,3 +5,4 @@ available in every yade script; this package adds the helpers a scene needs: blo
 polygons, the engine list, slope builders, factor of safety and limit equilibrium.
 """
 from .blocks import polygon2d, polygon_properties  # noqa: F401
+from .scene import engines, critical_time_step  # noqa: F401

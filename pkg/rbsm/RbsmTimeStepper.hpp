@@ -1,0 +1,34 @@
+// RbsmTimeStepper: the stability limit of the explicit integration of an RBSM block system.
+#pragma once
+#include <core/GlobalEngine.hpp>
+
+namespace yade {
+
+class RbsmTimeStepper : public GlobalEngine {
+public:
+	void action() override;
+	//! Critical time step of the current system [s] (+inf if no RBSM joint exists yet).
+	Real estimate();
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RbsmTimeStepper, GlobalEngine,
+		"Guards the explicit (central-difference) integration of RBSM blocks against instability. The critical step is "
+		"dt_crit = 2/ω_max, ω_max² the largest eigenvalue of M⁻¹K for the blocks (mass, polar inertia) and the joint springs "
+		"(kn, ks per unit area at every integration point, times its tributary area). ω_max² is bounded from above by the "
+		"block Gershgorin theorem (Feingold & Varga 1962) on M^-½ K M^-½, so the estimate is never above the true limit.\n\n"
+		"Place it after :yref:`InteractionLoop` and before :yref:`NewtonIntegrator`, so that the joints of this step are "
+		"known before the integration. Every :yref:`interval<RbsmTimeStepper.interval>` steps: if "
+		":yref:`setDt<RbsmTimeStepper.setDt>`, O.dt becomes safetyFactor·dt_crit; otherwise a step with "
+		"O.dt > safetyFactor·dt_crit is refused with an error before anything moves.",
+		((Real, safetyFactor, 0.8, , "Fraction of the critical step allowed (0 < safetyFactor ≤ 1)."))
+		((bool, setDt, false, , "Set O.dt to safetyFactor·dt_crit (True) or only check it and refuse an unstable O.dt (False)."))
+		((int, interval, 10, , "Check every this many steps (the first step is always checked)."))
+		((long, lastCheck, -1, (Attr::readonly | Attr::noSave), "Step of the last check."))
+		((Real, criticalDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step found at the last check [s].")),
+		/*ctor*/,
+		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the current system [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
+	);
+	// clang-format on
+};
+REGISTER_SERIALIZABLE(RbsmTimeStepper);
+
+} // namespace yade

@@ -1,0 +1,38 @@
+"""The engines of an RBSM scene, in one call that stays readable and changeable."""
+from yade import wrapper
+
+__all__ = ["engines", "critical_time_step"]
+
+
+def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, set_dt=True, interval=10, enlarge=0.0):
+    """YADE's simulation loop for RBSM blocks, to assign to O.engines (and edit if needed)::
+
+        ForceResetter
+        InsertionSortCollider([Bo1_Polygon2D_Aabb])             # candidate pairs
+        InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom],      # edge-to-edge contact
+                        [Ip2_RbsmMat_RbsmMat_RbsmPhys],          # Kawai springs, joint strength
+                        [Law2_RbsmGeom_RbsmPhys_MohrCoulomb])    # tractions, Mohr-Coulomb, tension cut-off
+        RbsmTimeStepper                                          # stability limit of the explicit step
+        NewtonIntegrator(gravity, damping)                       # central differences
+
+    *damping* is NewtonIntegrator's non-viscous (Cundall) damping, for quasi-static stages;
+    *contact_damping* the viscous damping ratio of the joints; *set_dt*: the time stepper sets O.dt
+    to safety × critical step (True) or refuses a larger O.dt (False).
+    Labels: collider, ig2, ip2, law, timeStepper, newton.
+    """
+    return [
+        wrapper.ForceResetter(),
+        wrapper.InsertionSortCollider([wrapper.Bo1_Polygon2D_Aabb(enlarge=enlarge)], label="collider"),
+        wrapper.InteractionLoop(
+            [wrapper.Ig2_Polygon2D_Polygon2D_RbsmGeom(nIP=nIP, label="ig2")],
+            [wrapper.Ip2_RbsmMat_RbsmMat_RbsmPhys(label="ip2")],
+            [wrapper.Law2_RbsmGeom_RbsmPhys_MohrCoulomb(dampingRatio=contact_damping, label="law")],
+        ),
+        wrapper.RbsmTimeStepper(safetyFactor=safety, setDt=set_dt, interval=interval, label="timeStepper"),
+        wrapper.NewtonIntegrator(gravity=gravity, damping=damping, label="newton"),
+    ]
+
+
+def critical_time_step():
+    """Critical time step [s] of the current scene's RBSM joints (inf before any joint exists)."""
+    return wrapper.RbsmTimeStepper().estimate()
