@@ -73,11 +73,12 @@ def _relocations(lib):
     out = {}
     for line in run("readelf", "-rW", lib).splitlines():
         parts = line.split()
-        if len(parts) >= 5 and re.fullmatch(r"[0-9a-f]{8,16}", parts[0]):
+        # RELATIVE lines have 4 fields (offset, info, type, addend), symbol lines 7
+        if len(parts) >= 4 and re.fullmatch(r"[0-9a-f]{8,16}", parts[0]):
             off = int(parts[0], 16)
             if parts[2].endswith("RELATIVE"):
                 out[off] = ("RELATIVE", int(parts[3], 16))
-            else:
+            elif len(parts) >= 5:
                 out[off] = (parts[4].split("@")[0], None)
     return out
 
