@@ -1,0 +1,36 @@
+"""Shared pieces of the physics scenes (imported inside a yade script: yade's names are passed in)."""
+import json
+import sys
+
+MARKER = "RBSM_RESULT "
+
+
+def params():
+    """The scene's parameters: one JSON object in argv[1] (may be absent)."""
+    return json.loads(sys.argv[1]) if len(sys.argv) > 1 and sys.argv[1] else {}
+
+
+def emit(result):
+    """Prints the result as one JSON line after the marker and flushes."""
+    sys.stdout.write(MARKER + json.dumps(result) + "\n")
+    sys.stdout.flush()
+
+
+def kinetic_energy(O, ids=None):
+    """Σ ½ m v² + ½ I ω² (planar: I = inertia[2], ω = angVel[2]) of the non-fixed bodies."""
+    e = 0.0
+    for b in O.bodies:
+        if ids is not None and b.id not in ids:
+            continue
+        s = b.state
+        if s.blockedDOFs == "xyzXYZ":
+            continue
+        e += 0.5 * s.mass * s.vel.squaredNorm() + 0.5 * s.inertia[2] * s.angVel[2] ** 2
+    return e
+
+
+def lsq_slope(t, v):
+    """Least-squares slope of v(t)."""
+    n = len(t)
+    mt, mv = sum(t) / n, sum(v) / n
+    return sum((a - mt) * (b - mv) for a, b in zip(t, v)) / sum((a - mt) ** 2 for a in t)
