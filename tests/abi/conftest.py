@@ -11,14 +11,14 @@ import elfinfo
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE_DIR = os.environ.get("RBSM_SOURCE_DIR", os.path.normpath(os.path.join(HERE, "..", "..")))
-BUILD_DIR = os.environ.get("RBSM_BUILD_DIR", os.path.join(SOURCE_DIR, "build"))
+BUILD_DIR = os.path.abspath(os.environ.get("RBSM_BUILD_DIR", os.path.join(SOURCE_DIR, "build")))
 
 
 def path_from_env(var, default):
     p = os.environ.get(var, os.path.join(BUILD_DIR, default))
     if not os.path.exists(p):
         pytest.fail("%s=%s does not exist: build the project first (cmake --build %s)" % (var, p, BUILD_DIR))
-    return p
+    return os.path.abspath(p)
 
 
 @pytest.fixture(scope="session")
@@ -47,3 +47,8 @@ def demangle(names):
     out = subprocess.run(["c++filt"], input="\n".join(real) + "\n", capture_output=True, text=True, check=True).stdout.splitlines()
     it = iter(out)
     return [next(it) if n else None for n in names]
+
+# the launcher helper shared with tests/yade
+import sys  # noqa: E402
+
+sys.path.insert(0, os.path.join(SOURCE_DIR, "tests", "yade"))
