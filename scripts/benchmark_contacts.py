@@ -1,0 +1,307 @@
+# -*- coding: utf-8 -*-
+"""Cost per contact-step: RBSM brick wall against a YADE sphere stack, in one run (headless).
+
+Run (regenerates docs/benchmarks.md):
+
+    /work/main/build/yade-rbsm -j1 -n -x scripts/benchmark_contacts.py
+
+The parent run (threads as given by -j) measures:
+  (a) RBSM: a staggered wall of NX x NY bricks (frictional joints) on a fixed base, settled under gravity;
+  (b) YADE spheres (FrictMat, Ig2_Sphere_Sphere_ScGeom, Law2_ScGeom_FrictPhys_CundallStrack): a simple cubic
+      stack on a wall with a similar number of real contacts, settled under gravity;
+  (c) RBSM with nIP=4 instead of 2;
+and then starts itself again with the other thread count (-j1 <-> -j2) as a child (option --child) for the
+thread comparison. Each scene: SETTLE steps untimed, then STEPS steps with O.timingEnabled=True.
+Prints a Markdown table and writes docs/benchmarks.md (table, per-engine timing, machine, command).
+This is a benchmark, not a test: it asserts nothing, except that the RBSM contact count does not depend on
+the collider's verletDist.
+"""
+import json
+import os
+import platform
+import subprocess
+import sys
+import time
+
+from yade import O, timing, utils, wrapper
+
+import yade_rbsm
+from yade_rbsm.blocks import polygon2d
+from yade_rbsm.scene import engines as rbsm_engines
+
+# yade -x does not give a usable __file__; the project root is two levels above the yade_rbsm package.
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(yade_rbsm.__file__))))
+SCRIPT = os.path.join(ROOT, "scripts", "benchmark_contacts.py")
+LAUNCHER = os.path.join(ROOT, "build", "yade-rbsm")
+DOC = os.path.join(ROOT, "docs", "benchmarks.md")
+
+NX, NY = 40, 40          # bricks per row, rows
+BW, BH = 0.2, 0.1        # brick width, height [m]
+VERLET_REL = 0.05        # collider.verletDist for the bricks = VERLET_REL * BH
+NSX, NSZ = 40, 40        # spheres: hexagonal stack, spheres per row, rows
+R = 0.05                 # sphere radius [m]
+SETTLE = 300             # untimed steps before timing
+STEPS = 150              # timed steps per chunk
+CHUNKS = 3               # timed chunks; the cheapest is reported
+END = "<!-- end of generated part; text below is kept when the script rewrites this file -->"
+
+
+def threads():
+    try:
+        return int(O.numThreads)
+    except AttributeError:
+        return int(os.environ.get("OMP_NUM_THREADS", "1") or 1)
+
+
+# ----------------------------------------------------------------------------------------------- scenes
+def build_wall(nIP=2, verlet=VERLET_REL * BH):
+    O.reset()
+    mat = wrapper.RbsmMat(young=1e9, poisson=0.2, frictionAngle=0.6, cohesion=0, tensileStrength=0, density=2000)
+    O.materials.append(mat)
+    # fixed base, one block under the whole wall (one brick height)
+    x0, x1 = -BW, (NX + 1) * BW
+    O.bodies.append(polygon2d([(x0, -BH), (x1, -BH), (x1, 0), (x0, 0)], mat, fixed=True))
+    for j in range(NY):
+        off = 0.5 * BW if j % 2 else 0.0
+        y0, y1 = j * BH, (j + 1) * BH
+        for i in range(NX):
+            xa, xb = i * BW + off, (i + 1) * BW + off
+            O.bodies.append(polygon2d([(xa, y0), (xb, y0), (xb, y1), (xa, y1)], mat))
+    O.engines = rbsm_engines(gravity=(0, -9.81, 0), damping=0.2, nIP=nIP, safety=0.8, set_dt=True, interval=10)
+    O.engines[1].verletDist = verlet
+    O.dt = 1e-6  # replaced by RbsmTimeStepper at the first step
+
+
+def build_spheres():
+    O.reset()
+    mat = wrapper.FrictMat(young=1e9, poisson=0.2, frictionAngle=0.6, density=2000)
+    O.materials.append(mat)
+    # Hexagonal stack in the x-z plane, NSX spheres per row (NSX-1 on odd rows), NSZ rows, between a floor
+    # and two side walls; like the bricks, motion is planar (y translation, x and z rotation blocked).
+    O.bodies.append(utils.wall(0, axis=2, sense=1, material=mat))
+    O.bodies.append(utils.wall(0, axis=0, sense=1, material=mat))
+    O.bodies.append(utils.wall(2 * R * NSX, axis=0, sense=-1, material=mat))
+    dz = 3 ** 0.5 * R
+    for k in range(NSZ):
+        odd = k % 2
+        for i in range(NSX - odd):
+            b = utils.sphere((R + 2 * R * i + odd * R, 0, R + k * dz), R, material=mat)
+            b.state.blockedDOFs = "yXZ"
+            O.bodies.append(b)
+    O.engines = [
+        wrapper.ForceResetter(),
+        wrapper.InsertionSortCollider([wrapper.Bo1_Sphere_Aabb(), wrapper.Bo1_Wall_Aabb()], label="collider"),
+        wrapper.InteractionLoop(
+            [wrapper.Ig2_Sphere_Sphere_ScGeom(), wrapper.Ig2_Wall_Sphere_ScGeom()],
+            [wrapper.Ip2_FrictMat_FrictMat_FrictPhys()],
+            [wrapper.Law2_ScGeom_FrictPhys_CundallStrack()],
+        ),
+        wrapper.NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.2, label="newton"),
+    ]
+    O.dt = 0.5 * utils.PWaveTimeStep()
+
+
+# ----------------------------------------------------------------------------------------------- measure
+def measure(name):
+    """Settle, then time STEPS steps; return a dict of figures."""
+    O.run(SETTLE, True)
+    # Timed in CHUNKS chunks of STEPS steps; the cheapest chunk is kept (other processes on the machine
+    # only ever add time).
+    best = None
+    for _ in range(CHUNKS):
+        O.timingEnabled = True
+        timing.reset()
+        t0 = time.perf_counter()
+        O.run(STEPS, True)
+        wall = time.perf_counter() - t0
+        O.timingEnabled = False
+        eng = {e.__class__.__name__: e.execTime * 1e-9 for e in O.engines}  # ns -> s over the timed steps
+        if best is None or sum(eng.values()) < sum(best[1].values()):
+            best = (wall, eng, capture_stats())
+    wall, eng, stats = best
+    nc = O.interactions.countReal()
+    ninter = len(O.interactions)
+    # Cost of a step = sum of the engines' execTime (O.run's wait polls, so the wall clock around it
+    # includes idle time; it is reported separately).
+    step = sum(eng.values()) / STEPS
+    il = eng.get("InteractionLoop", 0.0) / STEPS
+    return dict(name=name, bodies=len(O.bodies), contacts=nc, interactions=ninter, step_ms=step * 1e3,
+                wall_ms=wall / STEPS * 1e3,
+                us_cs=step * 1e6 / nc, il_us_cs=il * 1e6 / nc,
+                share={k: v / STEPS / step for k, v in eng.items()}, threads=threads(),
+                verlet=getattr(O.engines[1], "verletDist", float("nan")), dt=O.dt, stats=stats)
+
+
+def capture_stats():
+    import contextlib
+    import io
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf):
+        timing.stats()
+    return buf.getvalue()
+
+
+def rbsm_contact_count_check():
+    """Same number of real contacts after settling with verletDist = 0 and > 0."""
+    out = {}
+    for v in (0.0, VERLET_REL * BH):
+        build_wall(verlet=v)
+        O.run(SETTLE, True)
+        out[v] = O.interactions.countReal()
+    return out
+
+
+def run_child():
+    res = {}
+    build_wall(nIP=2)
+    res["rbsm"] = measure("RBSM")
+    build_spheres()
+    res["spheres"] = measure("spheres")
+    for r in res.values():
+        r.pop("stats")
+    print("CHILD_JSON " + json.dumps(res))
+
+
+# ----------------------------------------------------------------------------------------------- report
+def machine():
+    model = "?"
+    try:
+        for line in open("/proc/cpuinfo"):
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return "%s; nproc %d; %s; Python %s" % (model, os.cpu_count(), platform.platform(), platform.python_version())
+
+
+def main():
+    t_start = time.perf_counter()
+    jn = threads()
+    check = rbsm_contact_count_check()
+    build_wall(nIP=2)
+    rb = measure("RBSM (nIP=2)")
+    build_spheres()
+    sp = measure("YADE spheres")
+    build_wall(nIP=4)
+    rb4 = measure("RBSM (nIP=4)")
+
+    other = 2 if jn == 1 else 1
+    child = None
+    try:
+        p = subprocess.run([LAUNCHER, "-j%d" % other, "-n", "-x", SCRIPT, "--child"],
+                           capture_output=True, text=True, timeout=240)
+        for line in p.stdout.splitlines():
+            if line.startswith("CHILD_JSON "):
+                child = json.loads(line[len("CHILD_JSON "):])
+        if child is None:
+            print("child run failed:\n", p.stdout[-2000:], p.stderr[-2000:])
+    except Exception as e:  # a benchmark reports, it does not stop
+        print("child run failed:", e)
+
+    lines = []
+    lines.append("| scene | -j | bodies | real contacts | time / step [ms] | (wall clock / step [ms]) | µs / contact-step (step) | "
+                 "µs / contact-step (InteractionLoop) | InteractionLoop share | collider share | Newton share | RbsmTimeStepper share |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
+
+    def row(r):
+        s = r["share"]
+        lines.append("| %s | %d | %d | %d | %.3f | %.3f | %.3f | %.3f | %.0f %% | %.0f %% | %.0f %% | %s |" % (
+            r["name"], r["threads"], r["bodies"], r["contacts"], r["step_ms"], r["wall_ms"], r["us_cs"], r["il_us_cs"],
+            100 * s.get("InteractionLoop", 0), 100 * s.get("InsertionSortCollider", 0),
+            100 * s.get("NewtonIntegrator", 0),
+            ("%.1f %%" % (100 * s["RbsmTimeStepper"])) if "RbsmTimeStepper" in s else "–"))
+
+    for r in (rb, sp, rb4):
+        row(r)
+    if child:
+        c_rb, c_sp = child["rbsm"], child["spheres"]
+        c_rb["name"], c_sp["name"] = "RBSM (nIP=2)", "YADE spheres"
+        row(c_rb)
+        row(c_sp)
+    table = "\n".join(lines)
+
+    ratio = ["", "", "| ratio | whole step | InteractionLoop |", "|---|---|---|",
+             "| RBSM / spheres per contact-step (-j%d) | %.2f× | %.2f× |" % (jn, rb["us_cs"] / sp["us_cs"], rb["il_us_cs"] / sp["il_us_cs"]),
+             "| RBSM nIP=4 / nIP=2 per contact-step (-j%d) | %.2f× | %.2f× |" % (jn, rb4["us_cs"] / rb["us_cs"], rb4["il_us_cs"] / rb["il_us_cs"])]
+    if child:
+        ratio.append("| RBSM / spheres per contact-step (-j%d) | %.2f× | %.2f× |" % (
+            other, c_rb["us_cs"] / c_sp["us_cs"], c_rb["il_us_cs"] / c_sp["il_us_cs"]))
+        j1, j2 = (rb, c_rb) if jn == 1 else (c_rb, rb)
+        s1, s2 = (sp, c_sp) if jn == 1 else (c_sp, sp)
+        ratio.append("| RBSM speed-up -j1 → -j2 | %.2f× | %.2f× |" % (j1["us_cs"] / j2["us_cs"], j1["il_us_cs"] / j2["il_us_cs"]))
+        ratio.append("| spheres speed-up -j1 → -j2 | %.2f× | %.2f× |" % (s1["us_cs"] / s2["us_cs"], s1["il_us_cs"] / s2["il_us_cs"]))
+    table += "\n".join(ratio)
+
+    notes = ("Collider: spheres use YADE's automatic verletDist (%.4g m = 0.5·r); bricks use verletDist = %.4g m "
+             "(%.0f %% of the brick height). RBSM real contacts after %d settling steps: %s "
+             "(verletDist 0 vs %.4g m). Time steps: RBSM %.3g s (RbsmTimeStepper, safety 0.8), spheres %.3g s "
+             "(0.5·PWaveTimeStep). %d untimed settling steps, then %d chunks of %d timed steps per scene, the cheapest chunk reported; NewtonIntegrator damping 0.2. "
+             "Time per step = sum of the engines' execTime (O.timingEnabled); the wall clock around O.run also "
+             "contains O.run's polling. Real contacts counted at the end of the timed steps."
+             % (sp["verlet"], rb["verlet"], 100 * VERLET_REL, SETTLE,
+                " vs ".join(str(check[k]) for k in sorted(check)), VERLET_REL * BH, rb["dt"], sp["dt"], SETTLE, CHUNKS, STEPS))
+
+    print(table)
+    print()
+    print(notes)
+    print()
+    print("### yade.timing.stats(), RBSM nIP=2\n" + rb["stats"])
+    print("### yade.timing.stats(), spheres\n" + sp["stats"])
+
+    cmd = "/work/main/build/yade-rbsm -j%d -n -x scripts/benchmark_contacts.py" % jn
+    doc = [
+        "# Benchmarks",
+        "",
+        "## Cost per contact-step: RBSM against YADE spheres",
+        "",
+        "Generated by `scripts/benchmark_contacts.py` (headless; about %.0f s). Regenerate with:" % (time.perf_counter() - t_start),
+        "",
+        "    " + cmd,
+        "",
+        "Machine: " + machine() + ".",
+        "",
+        "Scenes (same run, same process): a staggered wall of %d×%d bricks (%.2f×%.2f m, frictional joints, φ=0.6 rad, "
+        "E=1 GPa) on one fixed base block, under gravity; a hexagonal stack of spheres in a vertical plane, %d rows of "
+        "%d/%d spheres (r=%.2f m, FrictMat, φ=0.6 rad, E=1 GPa) on a floor between two side walls, under gravity; both planar "
+        "(out-of-plane translation and rotations blocked). The second thread count comes from a child run of the same script."
+        % (NX, NY, BW, BH, NSZ, NSX, NSX - 1, R),
+        "",
+        table,
+        "",
+        notes,
+        "",
+        "Target (issue 3/5): RBSM ≤ 1.0× spheres per contact-step — %s at -j%d (whole step %.2f×, InteractionLoop %.2f×)."
+        % ("met" if rb["us_cs"] <= sp["us_cs"] else "**missed**", jn, rb["us_cs"] / sp["us_cs"], rb["il_us_cs"] / sp["il_us_cs"]),
+        "",
+        "### Where the time goes (`yade.timing.stats()`, -j%d)" % jn,
+        "",
+        "RBSM, nIP=2:",
+        "",
+        "```",
+        rb["stats"].rstrip(),
+        "```",
+        "",
+        "Spheres:",
+        "",
+        "```",
+        sp["stats"].rstrip(),
+        "```",
+        "",
+    ]
+    os.makedirs(os.path.dirname(DOC), exist_ok=True)
+    # Text after the END marker (hand-written analysis) is kept when the table is regenerated.
+    kept = ""
+    if os.path.exists(DOC):
+        old = open(DOC).read()
+        if END in old:
+            kept = old[old.index(END):]
+    with open(DOC, "w") as f:
+        f.write("\n".join(doc) + "\n" + (kept or END + "\n"))
+    print("written", DOC, "in %.0f s" % (time.perf_counter() - t_start))
+
+
+if "--child" in sys.argv:
+    run_child()
+else:
+    main()
