@@ -1,0 +1,79 @@
+"""PNG snapshots of an RBSM scene (matplotlib, Agg): blocks coloured by displacement magnitude
+(|pos - refPos|), fixed blocks grey, failed joints red (joints with no intact integration point
+that are open or slipping somewhere), like the seed paper's Fig. 5-6."""
+import math
+
+__all__ = ["block_polygons", "snapshot"]
+
+
+def block_polygons(O=None):
+    """[(id, world vertices, displacement magnitude, fixed)] for every Polygon2D body."""
+    if O is None:
+        from yade import O
+    from yade import Vector3
+    out = []
+    for b in O.bodies:
+        if b is None or type(b.shape).__name__ != "Polygon2D":
+            continue
+        pos, ori = b.state.pos, b.state.ori
+        pts = []
+        for v in b.shape.vertices:
+            w = ori * Vector3(v[0], v[1], 0)
+            pts.append((pos[0] + w[0], pos[1] + w[1]))
+        d = (pos - b.state.refPos).norm()
+        out.append((b.id, pts, d, b.state.blockedDOFs == "xyzXYZ"))
+    return out
+
+
+def failed_joints(O=None):
+    if O is None:
+        from yade import O
+    segs = []
+    for I in O.interactions:
+        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
+            continue
+        ph = I.phys
+        if ph.nIntact == 0 and (ph.nOpen > 0 or ph.nSlipping > 0):
+            segs.append([(I.geom.p0[0], I.geom.p0[1]), (I.geom.p1[0], I.geom.p1[1])])
+    return segs
+
+
+def snapshot(path, title="", vmax=None, O=None, slip=None, dpi=110):
+    """Write a PNG of the scene to *path*; *slip*: optional polyline drawn dashed. Returns path."""
+    if O is None:
+        from yade import O
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import PolyCollection, LineCollection
+
+    polys = block_polygons(O)
+    free = [p for p in polys if not p[3]]
+    fixed = [p for p in polys if p[3]]
+    disp = [p[2] for p in free]
+    vmax = vmax if vmax is not None else max(max(disp, default=0.0), 1e-6)
+    fig, ax = plt.subplots(figsize=(9, 5))
+    if fixed:
+        ax.add_collection(PolyCollection([p[1] for p in fixed], facecolors="0.8", edgecolors="0.4", linewidths=0.5))
+    pc = PolyCollection([p[1] for p in free], array=disp, cmap="viridis", edgecolors="k", linewidths=0.3)
+    pc.set_clim(0, vmax)
+    ax.add_collection(pc)
+    segs = failed_joints(O)
+    if segs:
+        ax.add_collection(LineCollection(segs, colors="red", linewidths=1.5))
+    if slip is not None:
+        ax.plot([p[0] for p in slip], [p[1] for p in slip], "w--", lw=1)
+    xs = [x for p in polys for x, _ in p[1]]
+    ys = [y for p in polys for _, y in p[1]]
+    if xs:
+        ax.set_xlim(min(xs) - 0.5, max(xs) + 0.5)
+        ax.set_ylim(min(ys) - 0.5, max(ys) + 0.5)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    fig.colorbar(pc, ax=ax, label="displacement [m]", shrink=0.8)
+    ax.set_title(title + ("  (red: failed joints, %d)" % len(segs)))
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+    return path

@@ -1,0 +1,21 @@
+"""Contact-force factor of safety against a hand calculation: a 2 m x 1 m block resting on a fixed
+block along a plane joint inclined at psi = 20 deg, phi = 30 deg, c = 0. At equilibrium the joint
+carries N = W cos(psi), T = W sin(psi) (driving, downslope), so FS = tan(phi)/tan(psi) = 1.586."""
+import os
+
+import pytest
+
+from conftest import HERE, run_yade
+
+
+def test_block_on_plane():
+    p = run_yade(os.path.join(HERE, "fs_two_blocks.py"), cwd=HERE)
+    assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
+    line = [l for l in p.stdout.splitlines() if l.startswith("RESULT")][0].split()
+    ok, n, r = line[1], int(line[2]), float(line[3])
+    N, T, fs, N0, T0, fs0, nj = map(float, line[4:])
+    assert ok == "True", "gravity stage did not converge (ratio %g after %d steps)" % (r, n)
+    assert nj == 1
+    assert N == pytest.approx(N0, rel=1e-3)
+    assert T == pytest.approx(T0, rel=1e-3)
+    assert fs == pytest.approx(fs0, rel=1e-3)
