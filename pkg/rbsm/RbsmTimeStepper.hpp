@@ -21,7 +21,7 @@ public:
 		"O.dt > safetyFactor·dt_crit is refused with an error before anything moves.",
 		((Real, safetyFactor, 0.8, , "Fraction of the critical step allowed (0 < safetyFactor ≤ 1)."))
 		((bool, setDt, false, , "Set O.dt to safetyFactor·dt_crit (True) or only check it and refuse an unstable O.dt (False)."))
-		((int, interval, 10, , "Check every this many steps (the first step is always checked)."))
+		((int, interval, 100, , "Check every this many steps (the first step is always checked). One estimate costs about one InteractionLoop pass (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
 		((long, lastCheck, -1, (Attr::readonly | Attr::noSave), "Step of the last check."))
 		((Real, criticalDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step found at the last check [s].")),
 		/*ctor*/,

@@ -4,7 +4,7 @@ from yade import wrapper
 __all__ = ["engines", "critical_time_step"]
 
 
-def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, set_dt=True, interval=10, enlarge=0.0):
+def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, set_dt=True, interval=100, enlarge=0.0):
     """YADE's simulation loop for RBSM blocks, to assign to O.engines (and edit if needed)::
 
         ForceResetter
