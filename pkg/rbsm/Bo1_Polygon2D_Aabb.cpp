@@ -18,9 +18,12 @@ void Bo1_Polygon2D_Aabb::go(const shared_ptr<Shape>& shape, shared_ptr<Bound>& b
 		lo = lo.cwiseMin(w);
 		hi = hi.cwiseMax(w);
 	}
-	const Vector3r pos = se3.position;
-	bound->min         = Vector3r(pos.x() + lo.x() - enlarge, pos.y() + lo.y() - enlarge, pos.z() - 0.5 * p.thickness);
-	bound->max         = Vector3r(pos.x() + hi.x() + enlarge, pos.y() + hi.y() + enlarge, pos.z() + 0.5 * p.thickness);
+	// Blocks of an assembly share edges exactly, so their boxes touch exactly; the collider only
+	// pairs boxes that overlap, so every box is enlarged by a round-off margin of its own size.
+	const Real     margin = enlarge + 1e-6 * p.circumradius;
+	const Vector3r pos    = se3.position;
+	bound->min         = Vector3r(pos.x() + lo.x() - margin, pos.y() + lo.y() - margin, pos.z() - 0.5 * p.thickness);
+	bound->max         = Vector3r(pos.x() + hi.x() + margin, pos.y() + hi.y() + margin, pos.z() + 0.5 * p.thickness);
 }
 
 } // namespace yade
