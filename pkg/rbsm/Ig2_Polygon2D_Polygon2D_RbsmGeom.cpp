@@ -1,4 +1,5 @@
 #include <pkg/rbsm/Ig2_Polygon2D_Polygon2D_RbsmGeom.hpp>
+#include <pkg/rbsm/RbsmPhys.hpp>
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
@@ -66,9 +67,14 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	RbsmGeom*        g        = existing ? static_cast<RbsmGeom*>(I->geom.get()) : nullptr;
 	rbsm::ContactHint hint;
 	if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
-	// A joint that exists is followed while it opens (its springs may hold tension until they
-	// break); the law removes it when it carries nothing. New contacts need touch or closeness.
-	const Real maxSeparation = existing ? A.circumradius + B.circumradius : interactionDistance;
+	// New contacts need touch or closeness. An existing joint is followed while it opens as far
+	// as its intact springs can hold tension (σt/kn, doubled as margin) so that the law, not the
+	// geometry, breaks it. The same distance trims the facing edge to the part that touches.
+	Real maxSeparation = interactionDistance;
+	if (existing) {
+		const auto* ph = dynamic_cast<const RbsmPhys*>(I->phys.get());
+		if (ph && ph->kn > 0 && ph->nIntact() > 0) maxSeparation += 2 * ph->tensileStrength / ph->kn;
+	}
 	const rbsm::EdgeContact c = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis);
 	if (!c.touching || (!existing && !(c.length > 0))) return false;
 

@@ -27,7 +27,7 @@ public:
 		"an existing one is kept (also open, in tension) until the law removes it.",
 		((int, nIP, 2, , "Integration points per contact (1-8, Gauss-Legendre). 2 integrates the force and moment of the linear traction of two rigid blocks exactly; more points resolve partial slip and partial opening along a joint."))
 		((Real, interactionDistance, 0, , "Largest gap [m] at which a new contact is made (0: touching or overlapping)."))
-		((Real, hysteresis, 1e-3, , "Relative margin (fraction of the smaller block size) by which another edge must be better before the reference edge of a contact changes; avoids flip-flopping between the two sides of a shared edge.")),
+		((Real, hysteresis, 1e-6, , "Relative margin (fraction of the smaller block size) by which another edge must be better before the reference edge of a contact changes; avoids flip-flopping between the two sides of a shared edge. It must stay well below overlap/size, or a contact keeps an edge that no longer faces the other block.")),
 		/*ctor*/,
 		/*py*/
 	);

@@ -1,6 +1,8 @@
 #include <pkg/rbsm/Law2_RbsmGeom_RbsmPhys_MohrCoulomb.hpp>
 #include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
 
+#include <algorithm>
+
 namespace yade {
 
 YADE_PLUGIN((Law2_RbsmGeom_RbsmPhys_MohrCoulomb));
@@ -39,7 +41,10 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		if (damped && !st.open) { // no damping force across an open joint
 			// shear damping only on the elastic branch: a slipping point is at its frictional limit
 			const Real dn = p.dampingCoefficient * g.normalVelocity[k] * a;
-			const Real ds = st.slipping ? 0 : -p.dampingCoefficient * g.shearVelocity[k] * a;
+			Real       ds = st.slipping ? 0 : -p.dampingCoefficient * g.shearVelocity[k] * a;
+			// the spring and the dashpot together stay within the Mohr-Coulomb strength
+			const Real limit = (st.intact ? p.cohesion : 0) * a + std::max<Real>(0, fn + dn) * p.tanPhi;
+			ds               = std::clamp(fs + ds, -limit, limit) - fs;
 			fn += dn;
 			fs += ds;
 			viscous += (dn * g.normalVelocity[k] - ds * g.shearVelocity[k]) * scene->dt;

@@ -79,10 +79,22 @@ namespace detail {
 	template <> struct ReturnsReference<Quaternionr> : std::true_type { };
 	template <> struct ReturnsReference<Matrix3r> : std::true_type { };
 
+	// Set an attribute whose postLoad checks it; a value that postLoad rejects is undone, so a
+	// failed assignment from Python leaves the object (and the scene) as it was.
 	template <class C, class T, T C::*Member> void setThenPostLoad(C& instance, const T& value)
 	{
+		T previous       = instance.*Member;
 		instance.*Member = value;
-		instance.callPostLoad();
+		try {
+			instance.callPostLoad();
+		} catch (...) {
+			instance.*Member = previous;
+			try {
+				instance.callPostLoad(); // refresh what postLoad derives from the restored value
+			} catch (...) {
+			}
+			throw;
+		}
 	}
 
 	// Expose one attribute to Python according to its flags.
