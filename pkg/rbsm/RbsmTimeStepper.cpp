@@ -62,7 +62,11 @@ void RbsmTimeStepper::action()
 	const Real dtMax = safetyFactor * estimate();
 	if (!std::isfinite(dtMax)) return; // no joint yet: nothing limits the step
 	if (setDt) {
-		scene->dt = dtMax;
+		// The estimate is only as good as the joints of this step: a block meeting another by a
+		// corner has a short, soft joint that stiffens as it closes before the next check. So the
+		// step set here never grows again once set; it only shrinks when stiffer joints appear.
+		scene->dt = dtWasSet ? std::min(scene->dt, dtMax) : dtMax;
+		dtWasSet  = true;
 		return;
 	}
 	// The estimate moves with the geometry by round-off from one step to the next: a step set to
