@@ -4,5 +4,13 @@ The C++ classes (Polygon2D, RbsmMat, Ig2_Polygon2D_Polygon2D_RbsmGeom, ...) are 
 available in every yade script; this package adds the helpers a scene needs: blocks from world
 polygons, the engine list, slope builders, factor of safety and limit equilibrium.
 """
-from .blocks import polygon2d, polygon_properties  # noqa: F401
-from .scene import engines, critical_time_step  # noqa: F401
+try:  # the YADE-dependent helpers; the pure-Python modules (limit_equilibrium) import without YADE
+    import yade.wrapper  # noqa: F401
+except ImportError:
+    pass
+else:
+    from .blocks import polygon2d, polygon_properties  # noqa: F401
+    from .scene import engines, critical_time_step  # noqa: F401
+
+# submodules (import them explicitly): slope, safety, snapshots, limit_equilibrium, vtkexport (VTK
+# output), monitor (yade.plot series, progress line), strength_reduction (FS by strength reduction)

@@ -19,7 +19,8 @@ thickness 1), ready to print next to :func:`limit_equilibrium.fellenius_polyline
 import math
 from dataclasses import dataclass
 
-__all__ = ["ContactFS", "contact_fs", "point_polyline_distance", "table2"]
+__all__ = ["ContactFS", "contact_fs", "point_polyline_distance", "table2", "le_slope", "circle_through",
+           "limit_equilibrium_summary", "fs_table"]
 
 
 def point_polyline_distance(p, poly):
@@ -107,3 +108,71 @@ def table2(rbsm, fellenius=None, title="Table 2 - factor of safety along the sli
         rows.append(("Limit equilibrium (Fellenius)", fellenius.shear, fellenius.normal, fellenius.fs))
     rows += [("seed paper: RBSM", 217.0, 271.0, 0.72), ("seed paper: Fellenius", 231.0, 253.0, 0.63)]
     return results_table(rows, title)
+
+
+# ---------------------------------------------------------------------------------------------
+# limit equilibrium on the block slope's geometry and material
+# ---------------------------------------------------------------------------------------------
+def le_slope(surface, material=None, c=None, phi=None, density=None, g=9.81):
+    """A :class:`limit_equilibrium.Slope` with the ground polyline of a block slope (e.g.
+    ``SlopeBlocks.surface``) and one layer with the block material: ``gamma = density·g`` [kN/m³],
+    ``c`` [kPa] and ``phi`` [deg] of the joints. Either an RbsmMat (*material*: ``density``,
+    ``cohesion`` [Pa], ``frictionAngle`` [rad]) or the values (*c* [Pa], *phi* [rad], *density*
+    [kg/m³]); explicit values win."""
+    from . import limit_equilibrium as le
+    if material is not None:
+        c = material.cohesion if c is None else c
+        phi = material.frictionAngle if phi is None else phi
+        density = material.density if density is None else density
+    if c is None or phi is None or density is None:
+        raise ValueError("le_slope: give a material or c, phi and density")
+    return le.Slope([(float(x), float(y)) for x, y in surface],
+                    le.Layer(c=c / 1e3, phi=math.degrees(phi), gamma=density * g / 1e3, name="blocks"))
+
+
+def circle_through(a, b, c):
+    """(xc, yc, R) of the circle through three points."""
+    (ax, ay), (bx, by), (cx, cy) = a, b, c
+    d = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    if d == 0:
+        raise ValueError("circle_through: collinear points")
+    ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay) + (cx * cx + cy * cy) * (ay - by)) / d
+    uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx) + (cx * cx + cy * cy) * (bx - ax)) / d
+    return ux, uy, math.hypot(ax - ux, ay - uy)
+
+
+def limit_equilibrium_summary(slope, circle=None, polyline=None, toe=None, search=None, n=50):
+    """Fellenius and Bishop on *circle* ``(xc, yc, R)``, Fellenius on *polyline*, and the
+    critical-circle search (Fellenius and Bishop) through *toe* over the centre grid *search* =
+    ``dict(x_range=..., y_range=..., nx=.., ny=.., refine=..)``. Returns ``{label: Result or
+    SearchResult}`` (a method that fails on this geometry, e.g. Bishop's m_alpha limit, is reported
+    as its ValueError message, a str)."""
+    from . import limit_equilibrium as le
+    out = {}
+
+    def _try(label, fn, *a, **k):
+        try:
+            out[label] = fn(*a, **k)
+        except ValueError as e:
+            out[label] = str(e)
+
+    if polyline is not None:
+        _try("Fellenius, slip polyline", le.fellenius_polyline, slope, polyline, n)
+    if circle is not None:
+        _try("Fellenius, circle", le.fellenius_circle, slope, le.Circle(*circle), n)
+        _try("Bishop, circle", le.bishop_circle, slope, le.Circle(*circle), n)
+    if search is not None and toe is not None:
+        for meth in ("fellenius", "bishop"):
+            _try("%s, critical circle" % meth.capitalize(), le.critical_circle, slope, through=toe,
+                 method=meth, n=n, **search)
+    return out
+
+
+def fs_table(rows, title="Factor of safety - all methods"):
+    """Rows ``(method, FS, note)``; FS may be None (not computed) or a str (failed)."""
+    w = max([len(r[0]) for r in rows] + [20])
+    lines = [title, "%-*s %8s  %s" % (w, "method", "FS", "note"), "-" * (w + 40)]
+    for lab, fs, note in rows:
+        f = "%8.3f" % fs if isinstance(fs, (int, float)) and fs is not None else "%8s" % "-"
+        lines.append("%-*s %s  %s" % (w, lab, f, note))
+    return "\n".join(lines)

@@ -1,0 +1,157 @@
+"""Run monitoring in YADE's idiom: a PyRunner in O.engines that records ``yade.plot`` series, and a
+progress line on long runs.
+
+::
+
+    from yade_rbsm.monitor import Monitor
+    mon = Monitor(ids=[12, 30], period=200)      # adds PyRunner(label="rbsmMonitor") to O.engines
+    O.run(20000, True)
+    mon.save("out/plot")                         # out/plot.png (matplotlib) + out/plot.txt (saveDataTxt)
+
+Every *period* steps the PyRunner calls :meth:`Monitor.record`, which does ``plot.addData`` with
+
+* ``t`` (O.time) and ``i`` (O.iter);
+* ``d_<id>``: displacement magnitude |pos - refPos| of each monitored block [m], and ``dmax``, the
+  largest over the monitored blocks;
+* ``Ek``: kinetic energy Σ ½ m v² + ½ I ω² of the free blocks [J];
+* ``unbalanced``: the unbalanced-force ratio (:func:`yade_rbsm.slope.unbalanced_ratio`: mean
+  |contact force + m g| over the free blocks / mean |m g|);
+* ``nSlipping``, ``nOpen``: numbers of joints slipping / open at some integration point.
+
+``plot.plots`` gets four panels against ``t``: the displacements, ``Ek``, ``unbalanced`` and the two
+joint counts. With *progress* (seconds of wall time, default 10) a line ``progress: step ...`` is
+printed at most that often, with the estimated wall time left when a target (:meth:`target`) is
+known. The PyRunner reaches the Monitor through a global of ``__main__`` (``_rbsm_monitor`` by
+default), since PyRunner commands run in the script's namespace.
+"""
+import math
+import time
+
+__all__ = ["Monitor", "kinetic_energy", "joint_counts"]
+
+
+def kinetic_energy(O=None):
+    if O is None:
+        from yade import O
+    ek = 0.0
+    for b in O.bodies:
+        if b is None or b.state.blockedDOFs == "xyzXYZ":
+            continue
+        s = b.state
+        ek += 0.5 * s.mass * s.vel.squaredNorm() + 0.5 * s.inertia[2] * s.angVel[2] ** 2
+    return ek
+
+
+def joint_counts(O=None):
+    """(number of joints slipping somewhere, number open somewhere, number of real joints)."""
+    if O is None:
+        from yade import O
+    ns = no = n = 0
+    for I in O.interactions:
+        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
+            continue
+        n += 1
+        if I.phys.nSlipping > 0:
+            ns += 1
+        if I.phys.nOpen > 0:
+            no += 1
+    return ns, no, n
+
+
+class Monitor:
+    def __init__(self, ids=(), period=200, progress=10.0, name="_rbsm_monitor", label="rbsmMonitor",
+                 install=True, reset=True):
+        from yade import plot
+        self.ids = list(ids)
+        self.period = int(period)
+        self.progress = progress
+        self.name, self.label = name, label
+        self._last_print = time.time()
+        self._t0 = time.time()
+        self._target = None  # (iter0, iter_end, wall0)
+        if reset:
+            plot.reset()
+        dnames = ["d_%d" % i for i in self.ids] + ["dmax"]
+        plot.plots = {"t": tuple(dnames), "t ": ("Ek",), "t  ": ("unbalanced",), "t   ": ("nSlipping", "nOpen")}
+        if install:
+            self.install()
+
+    def install(self):
+        """Register the Monitor in __main__ and put its PyRunner before NewtonIntegrator (the forces
+        of the step are then complete, gravity excluded, as unbalanced_ratio expects)."""
+        import __main__
+        from yade import O, wrapper
+        setattr(__main__, self.name, self)
+        engines = [e for e in O.engines if getattr(e, "label", "") != self.label]
+        pr = wrapper.PyRunner(command="%s.record()" % self.name, iterPeriod=self.period, label=self.label)
+        k = next((j for j, e in enumerate(engines) if type(e).__name__ == "NewtonIntegrator"), len(engines))
+        engines.insert(k, pr)
+        O.engines = engines
+        return pr
+
+    def target(self, n_steps):
+        """Announce that the next O.run will take *n_steps* (for the progress line's estimate)."""
+        from yade import O
+        self._target = (O.iter, O.iter + int(n_steps), time.time())
+
+    def record(self):
+        from yade import O, plot
+        from .slope import unbalanced_ratio
+        d = {}
+        dmax = 0.0
+        for i in self.ids:
+            s = O.bodies[i].state
+            di = (s.pos - s.refPos).norm()
+            d["d_%d" % i] = di
+            dmax = max(dmax, di)
+        ek = kinetic_energy(O)
+        ub = unbalanced_ratio()
+        ns, no, n = joint_counts(O)
+        plot.addData(t=O.time, i=O.iter, dmax=dmax, Ek=ek, unbalanced=ub, nSlipping=ns, nOpen=no, **d)
+        now = time.time()
+        if self.progress is not None and now - self._last_print >= self.progress:
+            self._last_print = now
+            eta = ""
+            if self._target and self._target[1] > self._target[0] and O.iter > self._target[0]:
+                i0, i1, w0 = self._target
+                frac = (O.iter - i0) / float(i1 - i0)
+                eta = "  %3.0f%%, about %.0f s left" % (100 * frac, (now - w0) * (1 - frac) / max(frac, 1e-9))
+            print("progress: step %d  t = %.4f s  dmax %.3e m  Ek %.3e J  unbalanced %.2e  slipping %d  open %d "
+                  "(of %d joints)  %.0f s wall%s" % (O.iter, O.time, dmax, ek, ub, ns, no, n, now - self._t0, eta),
+                  flush=True)
+
+    def save(self, base, title="RBSM run"):
+        """``base``.txt (plot.saveDataTxt) and ``base``.png (matplotlib, 4 panels). Returns the
+        paths."""
+        from yade import plot
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        txt = base + ".txt"
+        plot.saveDataTxt(txt)
+        data = plot.data
+        t = data.get("t", [])
+        fig, axs = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
+        for k in ["d_%d" % i for i in self.ids] + ["dmax"]:
+            if k in data:
+                axs[0].plot(t, data[k], label=k, lw=1.5 if k == "dmax" else 0.8)
+        axs[0].set_ylabel("displacement [m]")
+        axs[0].legend(fontsize=7, ncol=4)
+        axs[1].plot(t, data.get("Ek", []), "k")
+        axs[1].set_ylabel("kinetic energy [J]")
+        ub = [max(u, 1e-12) for u in data.get("unbalanced", [])]
+        axs[2].semilogy(t, ub, "b")
+        axs[2].set_ylabel("unbalanced force ratio")
+        axs[3].plot(t, data.get("nSlipping", []), "r", label="slipping")
+        axs[3].plot(t, data.get("nOpen", []), "g", label="open")
+        axs[3].set_ylabel("joints")
+        axs[3].legend(fontsize=8)
+        axs[3].set_xlabel("t [s]")
+        axs[0].set_title(title)
+        for a in axs:
+            a.grid(alpha=0.3)
+        fig.tight_layout()
+        png = base + ".png"
+        fig.savefig(png, dpi=100)
+        plt.close(fig)
+        return png, txt

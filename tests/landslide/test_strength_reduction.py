@@ -1,0 +1,28 @@
+"""Factor of safety by strength reduction (yade_rbsm.strength_reduction) for a single block on a
+plane joint, c = 0: FS = tan(phi)/tan(psi) (phi = 30 deg; psi = 20 deg: 1.586, psi = 25 deg:
+1.238) within 2 %; the bracket contains the closed form; the reference state (position, joint
+strength) is restored afterwards."""
+import math
+import os
+
+import pytest
+
+from conftest import HERE, run_yade
+
+
+@pytest.mark.parametrize("psi", [20.0, 25.0])
+def test_block_on_plane(psi):
+    p = run_yade(os.path.join(HERE, "sr_block.py"), str(psi), cwd=HERE, timeout=120)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    f = [l for l in p.stdout.splitlines() if l.startswith("RESULT")][0].split()
+    ok = f[1]
+    fs, lo, hi, fs0 = map(float, f[2:6])
+    ntrials, moved, tanphi = int(f[6]), float(f[7]), float(f[8])
+    assert ok == "True"
+    assert fs0 == pytest.approx(math.tan(math.radians(30)) / math.tan(math.radians(psi)), rel=1e-8)
+    assert fs == pytest.approx(fs0, rel=0.02), p.stdout[-3000:]
+    assert lo <= fs0 * 1.002 and hi >= fs0 * 0.998, (lo, hi, fs0)  # bracket (+ the criterion's resolution)
+    assert hi > lo and (hi - lo) <= 0.0051 * lo
+    assert ntrials <= 30
+    assert moved < 1e-9  # reference state restored
+    assert tanphi == pytest.approx(math.tan(math.radians(30)), rel=1e-8)
