@@ -10,8 +10,8 @@ void Bo1_Polygon2D_Aabb::go(const shared_ptr<Shape>& shape, shared_ptr<Bound>& b
 	if (p.vertices.empty()) throw std::runtime_error("Bo1_Polygon2D_Aabb: body #" + std::to_string(body ? body->id : -1) + " has a Polygon2D without vertices");
 	if (!(enlarge >= 0)) throw std::invalid_argument("Bo1_Polygon2D_Aabb.enlarge: must be >= 0");
 	if (!bound) bound = shared_ptr<Bound>(new Aabb);
-	const Real angle = planarAngle(se3.orientation);
-	const Real c = std::cos(angle), s = std::sin(angle);
+	Real c, s;
+	planarCosSin(se3.orientation, c, s);
 	Vector2r   lo = Vector2r::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;
 	for (const Vector2r& v : p.vertices) {
 		const Vector2r w(c * v.x() - s * v.y(), s * v.x() + c * v.y());

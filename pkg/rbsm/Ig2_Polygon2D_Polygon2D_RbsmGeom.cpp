@@ -14,8 +14,8 @@ namespace {
 	// World vertices into a reusable buffer (one per thread: InteractionLoop runs functors in parallel).
 	void worldVertices(const Polygon2D& shape, const State& state, std::vector<rbsm::Vec2>& out)
 	{
-		const Real angle = planarAngle(state.ori);
-		const Real c = std::cos(angle), s = std::sin(angle);
+		Real c, s;
+		planarCosSin(state.ori, c, s);
 		out.resize(shape.vertices.size());
 		for (size_t i = 0; i < shape.vertices.size(); i++) {
 			const Vector2r& v = shape.vertices[i];
@@ -72,10 +72,12 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	// geometry, breaks it. The same distance trims the facing edge to the part that touches.
 	Real maxSeparation = interactionDistance;
 	if (existing) {
-		const auto* ph = dynamic_cast<const RbsmPhys*>(I->phys.get());
+		// class index instead of dynamic_cast: this runs for every contact at every step
+		const IPhys* ip = I->phys.get();
+		const auto*  ph = (ip && ip->getClassIndex() == RbsmPhys::getClassIndexStatic()) ? static_cast<const RbsmPhys*>(ip) : nullptr;
 		if (ph && ph->kn > 0 && ph->nIntact() > 0) maxSeparation += 2 * ph->tensileStrength / ph->kn;
 	}
-	const rbsm::EdgeContact c = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis);
+	const rbsm::EdgeContact c = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, 2 * std::min(A.circumradius, B.circumradius));
 	if (!c.touching || (!existing && !(c.length > 0))) return false;
 
 	if (!g) {

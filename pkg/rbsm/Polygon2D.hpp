@@ -43,4 +43,14 @@ REGISTER_SERIALIZABLE(Polygon2D);
 //! Rotation angle about z of a planar orientation (rad, counter-clockwise).
 inline Real planarAngle(const Quaternionr& q) { return 2 * std::atan2(q.z(), q.w()); }
 
+//! cos and sin of the rotation about z of a planar orientation q = (cos θ/2, 0, 0, sin θ/2),
+//! without trigonometric calls: cos θ = w² − z², sin θ = 2wz (divided by w² + z² for a q that
+//! NewtonIntegrator's normalisation left slightly off unit length).
+inline void planarCosSin(const Quaternionr& q, Real& c, Real& s)
+{
+	const Real w = q.w(), z = q.z(), n = w * w + z * z;
+	c = (w * w - z * z) / n;
+	s = 2 * w * z / n;
+}
+
 } // namespace yade

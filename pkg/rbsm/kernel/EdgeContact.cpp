@@ -9,19 +9,26 @@
 namespace rbsm {
 
 namespace {
-	// Outward unit normal of edge i of a CCW polygon: the edge direction rotated by -90 deg.
-	Vec2 edgeNormal(const std::vector<Vec2>& P, int i)
+	// All outward edge normals of P, computed once per call of edgeContact (one square root per
+	// edge instead of one per edge and use). Thread-local buffers: the functor runs in parallel.
+	void edgeNormals(const std::vector<Vec2>& P, std::vector<Vec2>& out)
 	{
-		const Vec2 e = P[(i + 1) % P.size()] - P[i];
-		return Vec2(e.y(), -e.x()).normalized();
+		const size_t n = P.size();
+		out.resize(n);
+		for (size_t i = 0; i < n; ++i) {
+			const Vec2 e = P[(i + 1) % n] - P[i];
+			out[i]       = Vec2(e.y(), -e.x()).normalized();
+		}
 	}
 
-	// Separation of polygon Q from edge i of P (see edgeContact in the header), m.
-	Real edgeSeparation(const std::vector<Vec2>& P, int i, const std::vector<Vec2>& Q)
+	// Separation of polygon Q from edge i of P (normal nP[i]), m: the smallest signed distance of
+	// a vertex of Q in front of the edge's line (> 0: Q is entirely outside that edge).
+	Real edgeSeparation(const std::vector<Vec2>& P, const std::vector<Vec2>& nP, int i, const std::vector<Vec2>& Q)
 	{
-		const Vec2 n = edgeNormal(P, i);
-		Real       s = std::numeric_limits<Real>::infinity();
-		for (const auto& w : Q) s = std::min(s, n.dot(w - P[i]));
+		const Vec2& n = nP[i];
+		Real        s = std::numeric_limits<Real>::infinity();
+		for (const auto& w : Q)
+			s = std::min(s, n.dot(w - P[i]));
 		return s;
 	}
 
@@ -38,34 +45,39 @@ namespace {
 	}
 } // namespace
 
-EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, Real maxSeparation, const ContactHint* hint, Real hysteresis)
+EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, Real maxSeparation, const ContactHint* hint, Real hysteresis, Real minSizeGiven)
 {
 	EdgeContact c;
 	const int   nA = int(A.size()), nB = int(B.size());
 	if (nA < 3 || nB < 3) return c;
 
+	thread_local std::vector<Vec2> normalsA, normalsB;
+	edgeNormals(A, normalsA);
+	edgeNormals(B, normalsB);
+
 	// --- separating-axis search -----------------------------------------------------------
 	int  bestBody = 1, bestEdge = 0;
 	Real best = -std::numeric_limits<Real>::infinity();
 	for (int i = 0; i < nA; ++i) {
-		const Real s = edgeSeparation(A, i, B);
+		const Real s = edgeSeparation(A, normalsA, i, B);
 		if (s > best) best = s, bestBody = 1, bestEdge = i;
 	}
 	const int  bestA = bestEdge;
 	const Real sepA  = best;
 	for (int i = 0; i < nB; ++i) {
-		const Real s = edgeSeparation(B, i, A);
+		const Real s = edgeSeparation(B, normalsB, i, A);
 		if (s > best) best = s, bestBody = 2, bestEdge = i;
 	}
 
 	// Preferred edge: the hint's, else A's best. Keep it unless the best is clearly better.
-	const Real tol      = hysteresis * std::min(polygonSize(A), polygonSize(B));
+	const Real minSize  = minSizeGiven >= 0 ? minSizeGiven : std::min(polygonSize(A), polygonSize(B));
+	const Real tol      = hysteresis * minSize;
 	int        prefBody = 1, prefEdge = bestA;
 	Real       prefSep  = sepA;
 	if (hint && (hint->refBody == 1 || hint->refBody == 2) && hint->refEdge >= 0 && hint->refEdge < (hint->refBody == 1 ? nA : nB)) {
 		prefBody = hint->refBody;
 		prefEdge = hint->refEdge;
-		prefSep  = (prefBody == 1) ? edgeSeparation(A, prefEdge, B) : edgeSeparation(B, prefEdge, A);
+		prefSep  = (prefBody == 1) ? edgeSeparation(A, normalsA, prefEdge, B) : edgeSeparation(B, normalsB, prefEdge, A);
 	}
 	int  refBody = bestBody, refEdge = bestEdge;
 	Real sep     = best;
@@ -76,12 +88,13 @@ EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, 
 	c.refEdge    = refEdge;
 	// Round-off slop: an exactly shared edge moved by a rigid motion has |d| ~ 1e-16 size, which
 	// must still count as touching when maxSeparation = 0.
-	const Real slop   = 1e-12 * std::min(polygonSize(A), polygonSize(B));
+	const Real slop   = 1e-12 * minSize;
 	const Real maxSep = std::max(maxSeparation, Real(0)) + slop;
 	if (!(sep <= maxSep)) return c; // also rejects NaN
 
 	const std::vector<Vec2>& R = (refBody == 1) ? A : B; // reference polygon
 	const std::vector<Vec2>& I = (refBody == 1) ? B : A; // incident polygon
+	const std::vector<Vec2>& nIn = (refBody == 1) ? normalsB : normalsA;
 	const int                nI = int(I.size());
 
 	// --- reference edge frame ---------------------------------------------------------------
@@ -94,7 +107,7 @@ EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, 
 	int  inc = 0;
 	Real minDot = std::numeric_limits<Real>::infinity();
 	for (int i = 0; i < nI; ++i) {
-		const Real d = edgeNormal(I, i).dot(nRef);
+		const Real d = nIn[i].dot(nRef);
 		if (d < minDot) minDot = d, inc = i;
 	}
 	const Vec2 q0 = I[inc], q1 = I[(inc + 1) % nI];

@@ -62,8 +62,17 @@ struct ContactHint {
 /// Otherwise the incident edge (the edge of the other polygon whose outward normal is most
 /// anti-parallel to n_ref) is clipped to (i) the two side planes of the reference edge and
 /// (ii) the part where the gap is at most maxSeparation (d >= -maxSeparation).
+///
+/// minSize (m): the size that scales the hysteresis and the round-off slop; by default (< 0) the
+/// smaller of the two polygons' bounding-box sizes (polygonSize), which a caller that knows its
+/// blocks' sizes can pass to save that work in a hot loop.
 EdgeContact edgeContact(
-        const std::vector<Vec2>& A, const std::vector<Vec2>& B, Real maxSeparation, const ContactHint* hint = nullptr, Real hysteresis = 1e-3);
+        const std::vector<Vec2>& A,
+        const std::vector<Vec2>& B,
+        Real                     maxSeparation,
+        const ContactHint*       hint       = nullptr,
+        Real                     hysteresis = 1e-3,
+        Real                     minSize    = -1);
 
 /// Gauss-Legendre integration points on the contact segment, nIP in 1..8 (throws
 /// std::invalid_argument otherwise). s: parametric positions in [0,1] from p0 to p1 (increasing);
