@@ -23,10 +23,16 @@ def polygon_properties(vertices):
         j += c * (x0 * x0 + x0 * x1 + x1 * x1 + y0 * y0 + y0 * y1 + y1 * y1)
     area = a2 / 2.0
     if area == 0:
-        raise ValueError("polygon2d: degenerate polygon (zero area)")
+        raise ValueError("degenerate polygon (zero area)")
     cx, cy = cx / (6 * area), cy / (6 * area)
     j = j / 12.0 - area * (cx * cx + cy * cy)
     return area, (cx + ox, cy + oy), j
+
+
+def _describe(pts, most=4):
+    """Short text naming a polygon by its first vertices, for error messages."""
+    shown = ", ".join("(%g, %g)" % p for p in pts[:most])
+    return "[" + shown + (", ... %d vertices" % len(pts) if len(pts) > most else "") + "]"
 
 
 def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=False):
@@ -60,9 +66,13 @@ def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=F
         raise ValueError("polygon2d: a polygon needs at least 3 vertices, got %d" % len(pts))
     if not all(math.isfinite(c) for p in pts for c in p):
         raise ValueError("polygon2d: vertices contain NaN or inf")
-    area, (cx, cy), j = polygon_properties(pts)
-    # Polygon2D checks convexity, orientation and degeneracy and names the problem (ValueError).
-    shape = wrapper.Polygon2D(vertices=[(x - cx, y - cy) for x, y in pts], thickness=thickness, wire=wire)
+    try:
+        area, (cx, cy), j = polygon_properties(pts)
+        # Polygon2D checks convexity, orientation and degeneracy and names the problem (ValueError).
+        shape = wrapper.Polygon2D(vertices=[(x - cx, y - cy) for x, y in pts], thickness=thickness, wire=wire)
+    except ValueError as e:
+        # name the block by its world vertices: the body has no id before it is appended
+        raise ValueError("polygon2d(%s): %s" % (_describe(pts), e)) from None
     if color is not None:
         shape.color = color
     b = wrapper.Body()
