@@ -19,7 +19,22 @@ Stages:
      unbalanced-force ratio (mean |resultant force on free blocks| / mean |m g|) < --tol;
   3. Table 2: RBSM factor of safety from the contact forces along the slip polyline with the real
      phi = 30 deg, next to Fellenius along the same polyline (gamma = rho g);
-  4. dynamic stage: damping 0, joint friction back to phi = 30 deg: the wedge slides off.
+  4. limit equilibrium on the same slope (ground polyline, gamma = rho g, c, phi of the joints):
+     Fellenius along the slip polyline; Fellenius and Bishop for the circle tangent to the toe flat
+     at the toe and through the top of the crack; critical toe circle (grid search, Fellenius and
+     Bishop);
+  5. optional (--strength-reduction): FS by strength reduction from the state of stage 2 (tan(phi)
+     and c divided by F, damped stage; failure = a block displaced by more than --sr-dfail, or the
+     unbalanced-force ratio not below --sr-tol within --sr-steps steps; bracket and bisect);
+  6. dynamic stage: damping 0, joint friction back to phi = 30 deg: the wedge slides off.
+All factors of safety are printed in one table at the end.
+
+Outputs in --out: PNG snapshots (landslide_*.png, Fig. 5-6 style); VTK time series of the blocks and
+contacts (vtk/landslide_blocks.pvd, vtk/landslide_contacts.pvd: open them in ParaView), written
+every --vtk-every s of the dynamic stage; yade.plot series recorded by a PyRunner during the gravity
+and dynamic stages (displacement of monitored blocks, kinetic energy, unbalanced-force ratio, numbers
+of slipping and open joints) saved as landslide_plot.png and landslide_plot.txt; a progress line
+every --progress s of wall time.
 """
 import argparse
 import math
@@ -30,8 +45,9 @@ import time
 from yade import O, wrapper
 
 import yade_rbsm as yr
-from yade_rbsm import slope as sl, safety, snapshots
-from yade_rbsm import limit_equilibrium as le
+from yade_rbsm import slope as sl, safety, snapshots, vtkexport
+from yade_rbsm.monitor import Monitor
+from yade_rbsm.strength_reduction import strength_reduction
 
 ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 ap.add_argument("--density-units", choices=["kgf", "si"], default="kgf")
@@ -43,6 +59,15 @@ ap.add_argument("--max-settle", type=int, default=20000, help="max steps of the 
 ap.add_argument("--time", type=float, default=3.0, help="simulated time of the dynamic stage [s]")
 ap.add_argument("--dt", type=float, default=None, help="time step [s] (default: 0.8 x critical)")
 ap.add_argument("--small", action="store_true", help="tiny slope for smoke tests")
+ap.add_argument("--strength-reduction", action="store_true", help="also the FS by strength reduction")
+ap.add_argument("--sr-rtol", type=float, default=0.01, help="relative width of the final FS bracket")
+ap.add_argument("--sr-tol", type=float, default=1e-3, help="unbalanced-force ratio of a stable trial")
+ap.add_argument("--sr-steps", type=int, default=4000, help="max steps of a strength-reduction trial")
+ap.add_argument("--sr-dfail", type=float, default=0.1, help="runaway displacement of a trial [m]")
+ap.add_argument("--vtk-every", type=float, default=0.1, help="VTK snapshot period in the dynamic stage [s]")
+ap.add_argument("--plot-every", type=int, default=50, help="yade.plot recording period [steps]")
+ap.add_argument("--progress", type=float, default=10.0, help="progress line period [s of wall time]")
+ap.add_argument("--no-search", action="store_true", help="skip the critical-circle search")
 args = ap.parse_args(sys.argv[1:])
 
 t_wall = time.time()
@@ -91,6 +116,15 @@ print("time step: critical %.3e s (seed paper: 0.003 s); running with dt = %.3e 
 print("joints: %d bonded, %d on the crack broken" % (nj, nbroken))
 os.makedirs(args.out, exist_ok=True)
 
+# monitored blocks: the free blocks nearest to the wedge's toe, middle and crest, and one behind it
+def nearest(x, y):
+    return min(sb.free, key=lambda b: (O.bodies[b.id].state.pos[0] - x) ** 2 + (O.bodies[b.id].state.pos[1] - y) ** 2).id
+watch = [nearest(7 * scale, y0 + 0.5 * scale), nearest(11 * scale, y0 + 5.5 * scale),
+         nearest(15.5 * scale, y0 + 9.5 * scale), nearest(20 * scale, y0 + 9.5 * scale)]
+print("monitored blocks (yade.plot d_<id>): %s" % ", ".join("%d at (%.1f, %.1f)" % (i, O.bodies[i].state.pos[0],
+      O.bodies[i].state.pos[1]) for i in watch))
+mon = Monitor(ids=watch, period=args.plot_every, progress=args.progress)  # PyRunner in O.engines
+
 # --- gravity stage ---------------------------------------------------------------------------
 tan_settle = 5.0
 for I in O.interactions:
@@ -106,10 +140,17 @@ for I in O.interactions:
         I.phys.tanPhi = math.tan(phi)
 for b in O.bodies:
     b.state.refPos = b.state.pos  # displacements of the dynamic stage
+    b.state.refOri = b.state.ori
 fs = safety.contact_fs(plane)  # the crack joints (open, c = 0) carry no force: plane only
 g = 9.81
-slope_le = le.Slope(surface, le.Layer(c=0.0, phi=30.0, gamma=rho245 * g / 1e3))
-fel = le.fellenius_polyline(slope_le, slip, n=50)
+slope_le = safety.le_slope(surface, c=0.0, phi=phi, density=rho245, g=g)  # gamma = rho g, c, phi
+# circle tangent to the toe flat at the toe and through the top of the crack (centre above the toe)
+circle = safety.circle_through((toe, y0), (xcrack, surface[-1][1]), (2 * toe - xcrack, surface[-1][1]))
+t0 = time.time()
+search = None if args.no_search else dict(x_range=(toe - 6 * scale, crestx + 6 * scale), y_range=(y0 + 4 * scale, y0 + 30 * scale),
+                                          nx=16, ny=16, refine=2)
+lem = safety.limit_equilibrium_summary(slope_le, circle=circle, polyline=slip, toe=(toe, y0), search=search, n=50)
+fel = lem["Fellenius, slip polyline"]
 print(safety.table2(fs, fel))
 crack = [I for I in O.interactions if I.isReal and abs(I.geom.p0[0] - xcrack) < 1e-2 * scale
          and abs(I.geom.p1[0] - xcrack) < 1e-2 * scale and I.geom.p0[1] > ycrack - 1e-2]
@@ -117,11 +158,32 @@ print("crack: %d joints in contact carry a normal force of %.1f kN/m (thrust of 
       "absent from Fellenius)" % (len(crack), sum(I.phys.normalForce for I in crack) / 1e3))
 print("(RBSM: %d joints on the slip polyline, %.2f m of it; planar wedge closed form tan(phi)/tan(psi) = %.3f)"
       % (fs.n_joints, fs.length, math.tan(phi) / math.tan(psi)))
+print("limit equilibrium on the same slope (gamma = %.2f kN/m3, c = 0, phi = 30 deg; %.1f s wall):"
+      % (slope_le.layers[0].gamma, time.time() - t0))
+for k, v in lem.items():
+    print("  %-28s %s" % (k + ":", v))
 snapshots.snapshot(os.path.join(args.out, "landslide_0_before.png"), "after gravity stage, t = 0", O=O, slip=slip)
 
+# --- strength reduction (optional) -------------------------------------------------------------
+sr = None
+if args.strength_reduction:
+    t0 = time.time()
+    print("strength reduction from the state after the gravity stage (phi = 30 deg, c = 0):")
+    sr = strength_reduction(start=1.0, grow=1.25, rtol=args.sr_rtol, tol=args.sr_tol, d_fail=args.sr_dfail,
+                            max_steps=args.sr_steps, check=100, damping=0.7)
+    print("  %s\n  %s; %.1f s wall" % (sr, sr.criterion, time.time() - t0))
+
 # --- dynamic stage ---------------------------------------------------------------------------
-O.engines[-1].damping = 0.0
+mon.mark(" dynamic stage")
+vtk_series = vtkexport.VtkSeries(os.path.join(args.out, "vtk"), "landslide")
+vtk_series.write()  # t = 0 of the dynamic stage
+vtk_runner = wrapper.PyRunner(command="vtk_series.write()", virtPeriod=args.vtk_every, label="vtkRunner")
+vtk_runner.virtLast = O.time
+O.engines = O.engines + [vtk_runner]
+newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
+newton.damping = 0.0
 nsteps = int(args.time / O.dt)  # O.dt may change a little (time stepper)
+mon.target(nsteps)
 nchunks = 3
 mobile = [b.id for b in sb.free]
 t_dyn0 = O.time
@@ -136,5 +198,38 @@ for k in range(nchunks):
           % (O.time - t_dyn0, dmax, nslip, nopen, time.time() - t0))
     name = "landslide_%d_%s.png" % (k + 1, "during" if k < nchunks - 1 else "after")
     snapshots.snapshot(os.path.join(args.out, name), "dynamic stage, t = %.2f s" % (O.time - t_dyn0), O=O, slip=slip)
-print("snapshots in %s" % args.out)
+if vtk_series.entries["blocks"][-1][0] < O.time:
+    vtk_series.write()  # the last state
+png, txt = mon.save(os.path.join(args.out, "landslide_plot"), "landslide slope: gravity stage, then dynamic stage")
+print("snapshots in %s; VTK series %s (%d snapshots, open in ParaView); plot %s, data %s"
+      % (args.out, ", ".join(sorted(vtk_series.pvd.values())), len(vtk_series.entries["blocks"]), png, txt))
+
+# --- all factors of safety -------------------------------------------------------------------
+def _fs(v):
+    return v.fs if hasattr(v, "fs") else None
+
+
+def _note(v, extra=""):
+    if isinstance(v, str):
+        return "failed: " + v
+    if hasattr(v, "circle"):  # SearchResult
+        return "%s; %d of %d toe circles valid" % (v.circle, v.n_valid, v.n_tried)
+    return "T = %.1f kN/m, N = %.1f kN/m%s" % (v.shear, v.normal, extra)
+
+
+beta = math.atan2(surface[2][1] - surface[1][1], surface[2][0] - surface[1][0])
+rows = [("RBSM contact forces, slip polyline", fs.fs, "T = %.1f kN/m, N = %.1f kN/m, %d joints (Table 2)"
+         % (fs.shear, fs.normal, fs.n_joints))]
+if sr is not None:
+    rows.append(("RBSM strength reduction", sr.fs, "bracket [%.3f stable, %.3f failed], %d trials"
+                 % (sr.lo, sr.hi, len(sr.trials))))
+else:
+    rows.append(("RBSM strength reduction", None, "not run (--strength-reduction)"))
+for k, v in lem.items():
+    rows.append((k, _fs(v), _note(v, ", " + str(v.surface) if k.endswith(", circle") and not isinstance(v, str) else "")))
+rows += [("closed form: planar wedge tan(phi)/tan(psi)", math.tan(phi) / math.tan(psi), "psi = 35 deg, no crack thrust"),
+         ("closed form: infinite slope tan(phi)/tan(beta)", math.tan(phi) / math.tan(beta),
+          "face beta = %.1f deg (shallowest mechanism)" % math.degrees(beta)),
+         ("seed paper: RBSM", 0.72, "Table 2"), ("seed paper: Fellenius", 0.63, "Table 2")]
+print(safety.fs_table(rows))
 print("wall time %.1f s" % (time.time() - t_wall))

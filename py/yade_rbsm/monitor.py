@@ -69,6 +69,7 @@ class Monitor:
         self._last_print = time.time()
         self._t0 = time.time()
         self._target = None  # (iter0, iter_end, wall0)
+        self.marks = []  # (t, label): stage boundaries drawn in the saved plot
         if reset:
             plot.reset()
         dnames = ["d_%d" % i for i in self.ids] + ["dmax"]
@@ -88,6 +89,11 @@ class Monitor:
         engines.insert(k, pr)
         O.engines = engines
         return pr
+
+    def mark(self, label):
+        """Remember a stage boundary at the current O.time (a vertical line in :meth:`save`)."""
+        from yade import O
+        self.marks.append((O.time, label))
 
     def target(self, n_steps):
         """Announce that the next O.run will take *n_steps* (for the progress line's estimate)."""
@@ -134,7 +140,7 @@ class Monitor:
         fig, axs = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
         for k in ["d_%d" % i for i in self.ids] + ["dmax"]:
             if k in data:
-                axs[0].plot(t, data[k], label=k, lw=1.5 if k == "dmax" else 0.8)
+                axs[0].plot(t, data[k], "k:" if k == "dmax" else "-", label=k, lw=2 if k == "dmax" else 1)
         axs[0].set_ylabel("displacement [m]")
         axs[0].legend(fontsize=7, ncol=4)
         axs[1].plot(t, data.get("Ek", []), "k")
@@ -150,6 +156,11 @@ class Monitor:
         axs[0].set_title(title)
         for a in axs:
             a.grid(alpha=0.3)
+            for tm, lab in self.marks:
+                a.axvline(tm, color="0.5", ls="--", lw=0.8)
+        for tm, lab in self.marks:
+            axs[0].annotate(lab, (tm, 1), xycoords=("data", "axes fraction"), fontsize=7, ha="left", va="top",
+                            rotation=90, color="0.3")
         fig.tight_layout()
         png = base + ".png"
         fig.savefig(png, dpi=100)
