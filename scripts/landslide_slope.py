@@ -68,9 +68,17 @@ ap.add_argument("--vtk-every", type=float, default=0.1, help="VTK snapshot perio
 ap.add_argument("--plot-every", type=int, default=50, help="yade.plot recording period [steps]")
 ap.add_argument("--progress", type=float, default=10.0, help="progress line period [s of wall time]")
 ap.add_argument("--no-search", action="store_true", help="skip the critical-circle search")
+ap.add_argument("--yade-warnings", action="store_true",
+                help="keep YADE's InteractionLoop/InsertionSortCollider warnings (one per joint that separates)")
 args = ap.parse_args(sys.argv[1:])
 
 t_wall = time.time()
+if not args.yade_warnings:
+    # YADE warns "IGeomFunctor returned false on existing interaction!" each time a joint separates
+    # (thousands of lines in a landslide) and about verletDist without spheres: errors only.
+    from yade import log
+    log.setLevel("InteractionLoop", log.ERROR)
+    log.setLevel("InsertionSortCollider", log.ERROR)
 H = args.height
 scale = H / 10.0
 if args.small:
