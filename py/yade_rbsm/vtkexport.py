@@ -6,7 +6,7 @@ series ParaView opens (File > Open the ``.pvd``).
 * ``<prefix>_blocks_NNNN.vtp``: one polygon cell per :yref:`Polygon2D` body (its world vertices,
   counter-clockwise, z = 0; every block has its own points so that fields may jump between blocks).
   Point data: ``displacement`` (vertex position minus its reference position, from the body's
-  ``refPos``/``refOri``) and ``velocity`` (v + ω × r) [m, m/s].
+  ``refPos``/``refOri``) and ``velocity`` (v + ω × r) [m, m/s], ``id`` (body id of the vertex).
   Cell data: ``id`` (body id), ``displacement`` (of the centroid), ``displacementMagnitude``,
   ``velocity`` (of the centroid), ``angularVelocity`` (ω_z, rad/s), ``rotation`` (rad, since the
   reference orientation), ``fixed`` (1 for foundation/walls), ``mass``.
@@ -59,6 +59,7 @@ def blocks_polydata(O=None):
     polys = vtkCellArray()
     p_disp = _array(vtkDoubleArray, "displacement", 3)
     p_vel = _array(vtkDoubleArray, "velocity", 3)
+    p_id = _array(vtkIntArray, "id")
     c_id = _array(vtkIntArray, "id")
     c_disp = _array(vtkDoubleArray, "displacement", 3)
     c_dmag = _array(vtkDoubleArray, "displacementMagnitude")
@@ -84,6 +85,7 @@ def blocks_polydata(O=None):
             polys.InsertCellPoint(k)
             p_disp.InsertNextTuple3(x[0] - x0[0], x[1] - x0[1], 0.0)
             p_vel.InsertNextTuple3(v[0] - w[2] * r[1], v[1] + w[2] * r[0], 0.0)
+            p_id.InsertNextValue(b.id)
         d = pos - rpos
         c_id.InsertNextValue(b.id)
         c_disp.InsertNextTuple3(d[0], d[1], 0.0)
@@ -96,7 +98,7 @@ def blocks_polydata(O=None):
     pd = vtkPolyData()
     pd.SetPoints(pts)
     pd.SetPolys(polys)
-    for a in (p_disp, p_vel):
+    for a in (p_disp, p_vel, p_id):
         pd.GetPointData().AddArray(a)
     pd.GetPointData().SetActiveVectors("displacement")
     for a in (c_id, c_disp, c_dmag, c_vel, c_om, c_rot, c_fix, c_mass):

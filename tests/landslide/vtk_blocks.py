@@ -22,14 +22,23 @@ O.dt = 0.8 * yr.critical_time_step() * (1 - 1e-9)
 O.bodies[2].state.vel = (0.5, 0, 0)    # a sideways kick: velocity and displacement of block 2
 O.bodies[2].state.angVel = (0, 0, 0.2)
 series = vtkexport.VtkSeries(out, "t")
+
+
+def expect():
+    b = O.bodies[2]
+    return {"n_blocks": 3, "n_contacts": sum(1 for I in O.interactions if I.isReal), "time": O.time,
+            "disp2": [(b.state.pos - b.state.refPos)[k] for k in (0, 1)], "vel2": [b.state.vel[0], b.state.vel[1]],
+            "angvel2": b.state.angVel[2],
+            "vertices2": [[(b.state.pos + b.state.ori * Vector3(v[0], v[1], 0))[k] for k in (0, 1)] for v in b.shape.vertices],
+            "contacts": {"%d-%d" % (I.id1, I.id2): [I.phys.normalForce, I.phys.shearForce, I.phys.nSlipping, I.phys.nOpen,
+                                                     [I.geom.p0[0], I.geom.p0[1]], [I.geom.p1[0], I.geom.p1[1]]]
+                         for I in O.interactions if I.isReal}}
+
+
 O.run(10, True)
-series.write()
+series.write()  # snapshot 0: block 2 still moving (velocity, angular velocity)
+exp = [expect()]
 O.run(200, True)
-series.write()
-b = O.bodies[2]
-exp = {"n_blocks": 3, "n_contacts": sum(1 for I in O.interactions if I.isReal), "time": O.time,
-       "disp2": [(b.state.pos - b.state.refPos)[k] for k in (0, 1)], "vel2": [b.state.vel[0], b.state.vel[1]], "angvel2": b.state.angVel[2],
-       "vertices2": [[(b.state.pos + b.state.ori * Vector3(v[0], v[1], 0))[k] for k in (0, 1)] for v in b.shape.vertices],
-       "contacts": {"%d-%d" % (I.id1, I.id2): [I.phys.normalForce, I.phys.shearForce, I.phys.nSlipping, I.phys.nOpen,
-                                                [I.geom.p0[0], I.geom.p0[1]], [I.geom.p1[0], I.geom.p1[1]]] for I in O.interactions if I.isReal}}
+series.write()  # snapshot 1: settled, displaced
+exp.append(expect())
 print("EXPECT " + json.dumps(exp))
