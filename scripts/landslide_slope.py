@@ -151,7 +151,7 @@ for b in O.bodies:
     b.state.refOri = b.state.ori
 fs = safety.contact_fs(plane)  # the crack joints (open, c = 0) carry no force: plane only
 g = 9.81
-slope_le = safety.le_slope(surface, c=0.0, phi=phi, density=rho245, g=g)  # gamma = rho g, c, phi
+slope_le = safety.le_slope(sb.surface, mat, g=g)  # ground polyline of the blocks; gamma = rho g, c, phi of the material
 # circle tangent to the toe flat at the toe and through the top of the crack (centre above the toe)
 circle = safety.circle_through((toe, y0), (xcrack, surface[-1][1]), (2 * toe - xcrack, surface[-1][1]))
 t0 = time.time()
