@@ -78,7 +78,15 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		if (ph && ph->kn > 0 && ph->nIntact() > 0) maxSeparation += 2 * ph->tensileStrength / ph->kn;
 	}
 	const rbsm::EdgeContact c = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, 2 * std::min(A.circumradius, B.circumradius));
-	if (!c.touching || (!existing && !(c.length > 0))) return false;
+	if (!existing && !(c.touching && c.length > 0)) return false; // no new contact
+	if (existing && !c.touching) {
+		// The blocks of an existing joint no longer face each other within reach: YADE expects the
+		// law, not the geometry, to end an interaction, so the joint is handed over as lost.
+		g->lost       = true;
+		g->separation = c.separation;
+		return true;
+	}
+	if (g) g->lost = false;
 
 	if (!g) {
 		if (nIP < 1 || nIP > 8) throw std::invalid_argument("Ig2_Polygon2D_Polygon2D_RbsmGeom.nIP: must be 1..8 (got " + std::to_string(nIP) + ")");

@@ -16,6 +16,15 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	RbsmGeom& g = static_cast<RbsmGeom&>(*ig);
 	RbsmPhys& p = static_cast<RbsmPhys&>(*ip);
 	const size_t n = g.nPoints();
+	if (g.lost) { // the geometry found the blocks apart: every point breaks and opens, the joint goes
+		for (size_t k = 0; k < n; k++) {
+			p.intact[k] = p.slipping[k] = false;
+			p.open[k]                   = true;
+			p.shearTraction[k] = p.normalTraction[k] = 0;
+		}
+		p.normalForce = p.shearForce = p.strength = 0;
+		return false;
+	}
 
 	const rbsm::JointParams params { p.kn, p.ks, p.cohesion, p.tanPhi, p.tensileStrength };
 	const Real              area = g.length * g.thickness; // area of the whole joint [m²]
@@ -66,7 +75,10 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	p.strength    = strength;
 	p.plasticDissipation += dissipated;
 
-	if (!carries && g.separation > 0) return false; // open everywhere and apart: the joint is gone
+	// Open everywhere and clearly apart: the joint is gone. "Clearly": beyond round-off of the
+	// block size, so that two blocks resting edge to edge with zero overlap keep their contact
+	// instead of losing and re-making it every step.
+	if (!carries && g.separation > 1e-9 * (g.h1 + g.h2)) return false;
 
 	const Vector3r f3(force.x(), force.y(), 0);
 	scene->forces.addForce(I->getId1(), -f3);

@@ -38,6 +38,7 @@ public:
 		((std::vector<Real>, shearIncrement, , (Attr::readonly | Attr::noSave), "Tangential relative displacement Δus_k of this step at each point [m]."))
 		((std::vector<Real>, normalVelocity, , (Attr::readonly | Attr::noSave), "Relative normal velocity at each point [m/s] (> 0 closing)."))
 		((std::vector<Real>, shearVelocity, , (Attr::readonly | Attr::noSave), "Relative tangential velocity at each point [m/s]."))
+		((bool, lost, false, (Attr::readonly | Attr::noSave), "The blocks of this joint no longer face each other within reach (the facing edge clipped away, or separated beyond what intact springs can hold): the law breaks every point and removes the joint."))
 		((Vector2r, centroid1, Vector2r::Zero(), (Attr::readonly | Attr::noSave), "Centroid of block 1 at this step [m]."))
 		((Vector2r, centroid2, Vector2r::Zero(), (Attr::readonly | Attr::noSave), "Centroid of block 2 at this step [m].")),
 		/*ctor*/ createIndex();,

@@ -1,8 +1,8 @@
-# Reproducer (not a test): two Voronoi blocks sharing an edge exactly (same two vertices, bit for bit)
-# make a joint when appended as (B, A) but not as (A, B): Ig2_Polygon2D_Polygon2D_RbsmGeom returns
-# false for the pair, although rbsm::edgeContact on the same world vertices reports touching
-# (length 1.959 m) in both orders. Found by tests/tessellation/test_yade_voronoi.py (seed 7).
-#   build/yade-rbsm -n -x tests/tessellation/repro_ig2_pair_order.py   -> PAIR ... False / PAIR ... True
+# Scene of test_yade_voronoi.test_shared_edge_is_a_joint_in_either_body_order: two Voronoi blocks
+# sharing an edge exactly (same two vertices, bit for bit) must make a joint in either body order.
+# (Fixed bug: with zero overlap and no cohesion the law dropped the joint when the round-off
+# separation came out +0, which happened in one order only.)
+#   build/yade-rbsm -n -x tests/tessellation/repro_ig2_pair_order.py   -> PAIR True True, twice
 import math
 from yade_rbsm import polygon2d, engines
 A=[(4.37601772786057, 1.6817020136806937), (5.380494823864725, 0.0), (6.7557150031188575, 0.0), (6.81692363617913, 0.15878722372036985), (6.245753448128187, 1.5603589517472494), (4.438850593428841, 1.7861606909480725)]

@@ -56,39 +56,64 @@ EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, 
 	edgeNormals(B, normalsB);
 
 	// --- separating-axis search -----------------------------------------------------------
+	// The separation of every edge of A against B and of B against A, kept for the tie-break.
+	thread_local std::vector<Real> sepsA, sepsB;
+	sepsA.resize(nA);
+	sepsB.resize(nB);
 	int  bestBody = 1, bestEdge = 0;
 	Real best = -std::numeric_limits<Real>::infinity();
 	for (int i = 0; i < nA; ++i) {
-		const Real s = edgeSeparation(A, normalsA, i, B);
-		if (s > best) best = s, bestBody = 1, bestEdge = i;
+		sepsA[i] = edgeSeparation(A, normalsA, i, B);
+		if (sepsA[i] > best) best = sepsA[i], bestBody = 1, bestEdge = i;
 	}
-	const int  bestA = bestEdge;
-	const Real sepA  = best;
 	for (int i = 0; i < nB; ++i) {
-		const Real s = edgeSeparation(B, normalsB, i, A);
-		if (s > best) best = s, bestBody = 2, bestEdge = i;
+		sepsB[i] = edgeSeparation(B, normalsB, i, A);
+		if (sepsB[i] > best) best = sepsB[i], bestBody = 2, bestEdge = i;
 	}
 
-	// Preferred edge: the hint's, else A's best. Keep it unless the best is clearly better.
-	const Real minSize  = minSizeGiven >= 0 ? minSizeGiven : std::min(polygonSize(A), polygonSize(B));
-	const Real tol      = hysteresis * minSize;
-	int        prefBody = 1, prefEdge = bestA;
-	Real       prefSep  = sepA;
-	if (hint && (hint->refBody == 1 || hint->refBody == 2) && hint->refEdge >= 0 && hint->refEdge < (hint->refBody == 1 ? nA : nB)) {
-		prefBody = hint->refBody;
-		prefEdge = hint->refEdge;
-		prefSep  = (prefBody == 1) ? edgeSeparation(A, normalsA, prefEdge, B) : edgeSeparation(B, normalsB, prefEdge, A);
+	const Real minSize = minSizeGiven >= 0 ? minSizeGiven : std::min(polygonSize(A), polygonSize(B));
+	// Round-off slop: an exactly shared edge moved by a rigid motion has |d| ~ 1e-16 size, which
+	// must still count as touching when maxSeparation = 0.
+	const Real slop = 1e-12 * minSize;
+
+	// Ties: where several edges are equally good within round-off (a shared edge meets a corner
+	// of the other block at the same separation), take the one that faces an edge of the other
+	// polygon most squarely, so that two blocks sharing an edge get an edge contact in either
+	// order of the bodies, not a corner touch of zero length. Among equals, A's edge comes first.
+	auto facing = [](const Vec2& n, const std::vector<Vec2>& nInc) {
+		Real m = std::numeric_limits<Real>::infinity();
+		for (const auto& ni : nInc)
+			m = std::min(m, ni.dot(n));
+		return m; // -1: exactly antiparallel to an edge of the other polygon
+	};
+	{
+		const Real bestSep    = best;
+		Real       bestFacing = std::numeric_limits<Real>::infinity();
+		for (int body = 1; body <= 2; ++body) {
+			const auto& seps = body == 1 ? sepsA : sepsB;
+			const auto& nP   = body == 1 ? normalsA : normalsB;
+			const auto& nQ   = body == 1 ? normalsB : normalsA;
+			for (int i = 0; i < int(seps.size()); ++i) {
+				if (seps[i] < bestSep - slop) continue;
+				const Real f = facing(nP[i], nQ);
+				if (f < bestFacing - 1e-12) bestFacing = f, bestBody = body, bestEdge = i, best = seps[i];
+			}
+		}
 	}
-	int  refBody = bestBody, refEdge = bestEdge;
-	Real sep     = best;
-	if (prefSep >= best - tol) refBody = prefBody, refEdge = prefEdge, sep = prefSep;
+
+	// Preferred edge: the hint's (the reference of the previous step), kept unless another edge
+	// is better by more than the hysteresis.
+	const Real tol     = hysteresis * minSize;
+	int        refBody = bestBody, refEdge = bestEdge;
+	Real       sep     = best;
+	if (hint && (hint->refBody == 1 || hint->refBody == 2) && hint->refEdge >= 0 && hint->refEdge < (hint->refBody == 1 ? nA : nB)) {
+		const Real prefSep = (hint->refBody == 1) ? sepsA[hint->refEdge] : sepsB[hint->refEdge];
+		if (prefSep >= best - tol) refBody = hint->refBody, refEdge = hint->refEdge, sep = prefSep;
+	}
 
 	c.separation = sep;
 	c.refBody    = refBody;
 	c.refEdge    = refEdge;
-	// Round-off slop: an exactly shared edge moved by a rigid motion has |d| ~ 1e-16 size, which
-	// must still count as touching when maxSeparation = 0.
-	const Real slop   = 1e-12 * minSize;
 	const Real maxSep = std::max(maxSeparation, Real(0)) + slop;
 	if (!(sep <= maxSep)) return c; // also rejects NaN
 
