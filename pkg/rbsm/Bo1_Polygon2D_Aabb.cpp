@@ -1,15 +1,34 @@
 #include <pkg/rbsm/Bo1_Polygon2D_Aabb.hpp>
 
+#include <iostream>
+#include <mutex>
+
 namespace yade {
 
 YADE_PLUGIN((Bo1_Polygon2D_Aabb));
 
+void Bo1_Polygon2D_Aabb::postLoad(Bo1_Polygon2D_Aabb&)
+{
+	if (!(std::isfinite(enlarge) && enlarge >= 0))
+		throw std::invalid_argument("Bo1_Polygon2D_Aabb.enlarge: must be a finite distance >= 0 (got " + std::to_string(enlarge) + ")");
+}
+
 void Bo1_Polygon2D_Aabb::go(const shared_ptr<Shape>& shape, shared_ptr<Bound>& bound, const Se3r& se3, const Body* body)
 {
 	const Polygon2D& p = static_cast<const Polygon2D&>(*shape);
-	if (p.vertices.empty()) throw std::runtime_error("Bo1_Polygon2D_Aabb: body #" + std::to_string(body ? body->id : -1) + " has a Polygon2D without vertices");
-	if (!(enlarge >= 0)) throw std::invalid_argument("Bo1_Polygon2D_Aabb.enlarge: must be >= 0");
 	if (!bound) bound = shared_ptr<Bound>(new Aabb);
+	if (p.vertices.empty()) {
+		// A Polygon2D made without vertices (Polygon2D() in a script). Throwing here would abort
+		// YADE (the collider runs functors in parallel), so the body gets a point bound, meets
+		// nothing, and the problem is reported once.
+		static std::once_flag reported;
+		std::call_once(reported, [&] {
+			std::cerr << "yade-rbsm: ERROR: body #" << (body ? body->id : -1)
+			          << " has a Polygon2D without vertices; it takes part in no contact (give Polygon2D.vertices)" << std::endl;
+		});
+		bound->min = bound->max = se3.position;
+		return;
+	}
 	Real c, s;
 	planarCosSin(se3.orientation, c, s);
 	Vector2r   lo = Vector2r::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;

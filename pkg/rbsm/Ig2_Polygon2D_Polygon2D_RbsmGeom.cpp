@@ -10,6 +10,16 @@ namespace yade {
 
 YADE_PLUGIN((RbsmGeom)(Ig2_Polygon2D_Polygon2D_RbsmGeom));
 
+void Ig2_Polygon2D_Polygon2D_RbsmGeom::postLoad(Ig2_Polygon2D_Polygon2D_RbsmGeom&)
+{
+	if (nIP < 1 || nIP > 8) throw std::invalid_argument("Ig2_Polygon2D_Polygon2D_RbsmGeom.nIP: must be 1..8 (got " + std::to_string(nIP) + ")");
+	if (!(std::isfinite(interactionDistance) && interactionDistance >= 0))
+		throw std::invalid_argument(
+		        "Ig2_Polygon2D_Polygon2D_RbsmGeom.interactionDistance: must be a finite distance >= 0 (got " + std::to_string(interactionDistance) + ")");
+	if (!(std::isfinite(hysteresis) && hysteresis >= 0))
+		throw std::invalid_argument("Ig2_Polygon2D_Polygon2D_RbsmGeom.hysteresis: must be a finite number >= 0 (got " + std::to_string(hysteresis) + ")");
+}
+
 namespace {
 	// World vertices into a reusable buffer (one per thread: InteractionLoop runs functors in parallel).
 	void worldVertices(const Polygon2D& shape, const State& state, std::vector<rbsm::Vec2>& out)
@@ -54,10 +64,7 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	if (shift2 != Vector3r::Zero()) throw std::runtime_error("Ig2_Polygon2D_Polygon2D_RbsmGeom: periodic cells are not supported");
 	const Polygon2D& A = static_cast<const Polygon2D&>(*s1);
 	const Polygon2D& B = static_cast<const Polygon2D&>(*s2);
-	if (A.vertices.empty() || B.vertices.empty())
-		throw std::runtime_error(
-		        "Ig2_Polygon2D_Polygon2D_RbsmGeom: body #" + std::to_string(A.vertices.empty() ? I->getId1() : I->getId2())
-		        + " has a Polygon2D without vertices");
+	if (A.vertices.empty() || B.vertices.empty()) return false; // reported by Bo1_Polygon2D_Aabb
 
 	thread_local std::vector<rbsm::Vec2> va, vb;
 	worldVertices(A, state1, va);
@@ -89,7 +96,6 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	if (g) g->lost = false;
 
 	if (!g) {
-		if (nIP < 1 || nIP > 8) throw std::invalid_argument("Ig2_Polygon2D_Polygon2D_RbsmGeom.nIP: must be 1..8 (got " + std::to_string(nIP) + ")");
 		auto geom = shared_ptr<RbsmGeom>(new RbsmGeom);
 		rbsm::integrationPoints(nIP, geom->positions, geom->weights);
 		geom->thickness   = std::min(A.thickness, B.thickness);

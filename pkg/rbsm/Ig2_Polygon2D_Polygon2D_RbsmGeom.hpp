@@ -19,15 +19,17 @@ public:
 	{
 		throw std::logic_error("Ig2_Polygon2D_Polygon2D_RbsmGeom::goReverse called: the functor is symmetric and must not be reversed");
 	}
+	//! Checks the attributes when they are set (raises ValueError in Python, before any step).
+	void postLoad(Ig2_Polygon2D_Polygon2D_RbsmGeom&);
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ig2_Polygon2D_Polygon2D_RbsmGeom, IGeomFunctor,
 		"Edge-to-edge contact of two :yref:`Polygon2D` blocks (RBSM, seed paper Fig. 3 and eq. 8-9): separating-axis search "
 		"for the reference edge, clipping of the facing edge, integration points along the contact segment. A new contact "
 		"is made when the blocks overlap or are closer than :yref:`interactionDistance<Ig2_Polygon2D_Polygon2D_RbsmGeom.interactionDistance>`; "
 		"an existing one is kept (also open, in tension) until the law removes it.",
-		((int, nIP, 2, , "Integration points per contact (1-8, Gauss-Legendre). 2 integrates the force and moment of the linear traction of two rigid blocks exactly; more points resolve partial slip and partial opening along a joint."))
-		((Real, interactionDistance, 0, , "Largest gap [m] at which a new contact is made (0: touching or overlapping)."))
-		((Real, hysteresis, 1e-6, , "Relative margin (fraction of the smaller block size) by which another edge must be better before the reference edge of a contact changes; avoids flip-flopping between the two sides of a shared edge. It must stay well below overlap/size, or a contact keeps an edge that no longer faces the other block.")),
+		((int, nIP, 2, Attr::triggerPostLoad, "Integration points per contact (1-8, Gauss-Legendre). 2 integrates the force and moment of the linear traction of two rigid blocks exactly; more points resolve partial slip and partial opening along a joint."))
+		((Real, interactionDistance, 0, Attr::triggerPostLoad, "Largest gap [m] at which a new contact is made (0: touching or overlapping)."))
+		((Real, hysteresis, 1e-6, Attr::triggerPostLoad, "Relative margin (fraction of the smaller block size) by which another edge must be better before the reference edge of a contact changes; avoids flip-flopping between the two sides of a shared edge. It must stay well below overlap/size, or a contact keeps an edge that no longer faces the other block.")),
 		/*ctor*/,
 		/*py*/
 	);

@@ -9,6 +9,12 @@ namespace yade {
 class Law2_RbsmGeom_RbsmPhys_MohrCoulomb : public LawFunctor {
 public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
+	//! Checks the attributes when they are set (raises ValueError in Python, before any step).
+	void postLoad(Law2_RbsmGeom_RbsmPhys_MohrCoulomb&)
+	{
+		if (!(std::isfinite(dampingRatio) && dampingRatio >= 0))
+			throw std::invalid_argument("Law2_RbsmGeom_RbsmPhys_MohrCoulomb.dampingRatio: must be a finite number >= 0 (got " + std::to_string(dampingRatio) + ")");
+	}
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_RbsmGeom_RbsmPhys_MohrCoulomb, LawFunctor,
 		"Contact law of the Rigid-Bodies-Spring Model (seed paper eq. 10-11). At each integration point k of the joint:\n\n"
@@ -19,7 +25,7 @@ public:
 		"The tractions, times the tributary area w_k·ℓ·thickness, give a force and a moment on each block (force on body 2 "
 		"= Σ (σn n + τ t) a_k, opposite on body 1). With O.trackEnergy: 'elastPotential' (spring energy) and 'plastDissip' "
 		"(slip dissipation), plus 'viscDamp' if dampingRatio > 0. A joint that is open everywhere and separated is removed.",
-		((Real, dampingRatio, 0, , "Viscous contact damping as a fraction of critical damping of the joint (normal and shear), ξ; 0 disables it (no cost)."))
+		((Real, dampingRatio, 0, Attr::triggerPostLoad, "Viscous contact damping as a fraction of critical damping of the joint (normal and shear), ξ; 0 disables it (no cost)."))
 		((int, plastDissipIx, -1, (Attr::hidden | Attr::noSave), "Index of plastDissip in O.energy."))
 		((int, elastPotentialIx, -1, (Attr::hidden | Attr::noSave), "Index of elastPotential in O.energy."))
 		((int, viscDampIx, -1, (Attr::hidden | Attr::noSave), "Index of viscDamp in O.energy.")),

@@ -12,10 +12,7 @@ void Polygon2D::postLoad(Polygon2D& p)
 {
 	if (!(std::isfinite(p.thickness) && p.thickness > 0))
 		throw std::invalid_argument("Polygon2D.thickness: must be a finite number > 0 (got " + std::to_string(p.thickness) + ")");
-	if (p.vertices.empty()) { // a default-constructed shape, not yet given its vertices
-		p.area = p.polarMoment = p.circumradius = 0;
-		return;
-	}
+	if (p.vertices.empty()) throw std::invalid_argument("Polygon2D.vertices: a polygon needs at least 3 vertices (got none)");
 	const std::vector<rbsm::Vec2> v(p.vertices.begin(), p.vertices.end());
 	const std::string problem = rbsm::polygonProblem(v);
 	if (!problem.empty()) throw std::invalid_argument("Polygon2D.vertices: " + problem);

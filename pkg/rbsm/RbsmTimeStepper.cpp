@@ -16,6 +16,7 @@ Real RbsmTimeStepper::estimate()
 	std::vector<rbsm::DynBody> dyn;
 	std::vector<int>           index(bodies.size(), -1); // body id -> index in dyn
 	std::vector<rbsm::DynContact> contacts;
+	Real                          beta = 0; // largest damping coefficient / spring stiffness of a joint [s]
 	for (const auto& I : *scene->interactions) {
 		if (!I->isReal()) continue;
 		const auto* g = dynamic_cast<const RbsmGeom*>(I->geom.get());
@@ -36,6 +37,8 @@ Real RbsmTimeStepper::estimate()
 			}
 			ends[side] = index[id];
 		}
+		// viscous joint damping: its coefficient per stiffness, in both directions (see below)
+		if (p->dampingCoefficient > 0) beta = std::max(beta, p->dampingCoefficient / std::min(p->kn, p->ks));
 		rbsm::DynContact c;
 		c.body1   = ends[0];
 		c.body2   = ends[1];
@@ -49,14 +52,23 @@ Real RbsmTimeStepper::estimate()
 		}
 		contacts.push_back(std::move(c));
 	}
-	criticalDt = rbsm::criticalTimeStepGershgorin(dyn, contacts);
+	const Real undamped = rbsm::criticalTimeStepGershgorin(dyn, contacts);
+	// Joint dashpots (Law2's dampingRatio) lower the limit of the central-difference scheme, whose
+	// velocity is half a step behind: dt ≤ (2/ω)(√(1+ξ²) − ξ) for a mode of frequency ω and damping
+	// ratio ξ. The joints' damping matrix is at most β·K (β = c/k of the most damped joint, c/ks
+	// for the shear dashpot, which uses the normal coefficient on the softer spring), so
+	// ξ ≤ β·ω/2 for every mode; with ω̂ = 2/undamped ≥ ω_max and the limit decreasing in ω, the
+	// step below stays on the safe side.
+	if (beta > 0 && std::isfinite(undamped)) {
+		const Real omega = 2 / undamped, xi = beta * omega / 2;
+		criticalDt       = undamped * (std::sqrt(1 + xi * xi) - xi);
+	} else
+		criticalDt = undamped;
 	return criticalDt;
 }
 
 void RbsmTimeStepper::action()
 {
-	if (!(safetyFactor > 0 && safetyFactor <= 1)) throw std::invalid_argument("RbsmTimeStepper.safetyFactor: must be in (0, 1]");
-	if (interval < 1) throw std::invalid_argument("RbsmTimeStepper.interval: must be >= 1");
 	if (lastCheck >= 0 && scene->iter - lastCheck < interval) return;
 	lastCheck        = scene->iter;
 	const Real dtMax = safetyFactor * estimate();

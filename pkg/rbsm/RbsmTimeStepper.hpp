@@ -7,6 +7,13 @@ namespace yade {
 class RbsmTimeStepper : public GlobalEngine {
 public:
 	void action() override;
+	//! Checks the attributes when they are set (raises ValueError in Python, before any step).
+	void postLoad(RbsmTimeStepper&)
+	{
+		if (!(safetyFactor > 0 && safetyFactor <= 1))
+			throw std::invalid_argument("RbsmTimeStepper.safetyFactor: must be in (0, 1] (got " + std::to_string(safetyFactor) + ")");
+		if (interval < 1) throw std::invalid_argument("RbsmTimeStepper.interval: must be >= 1 (got " + std::to_string(interval) + ")");
+	}
 	//! Critical time step of the current system [s] (+inf if no RBSM joint exists yet).
 	Real estimate();
 	// clang-format off
@@ -19,9 +26,9 @@ public:
 		"known before the integration. Every :yref:`interval<RbsmTimeStepper.interval>` steps: if "
 		":yref:`setDt<RbsmTimeStepper.setDt>`, O.dt becomes safetyFactor·dt_crit; otherwise a step with "
 		"O.dt > safetyFactor·dt_crit is refused with an error before anything moves.",
-		((Real, safetyFactor, 0.8, , "Fraction of the critical step allowed (0 < safetyFactor ≤ 1)."))
+		((Real, safetyFactor, 0.8, Attr::triggerPostLoad, "Fraction of the critical step allowed (0 < safetyFactor ≤ 1)."))
 		((bool, setDt, false, , "Set O.dt to safetyFactor·dt_crit (True) or only check it and refuse an unstable O.dt (False)."))
-		((int, interval, 100, , "Check every this many steps (the first step is always checked). One estimate costs about one InteractionLoop pass (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
+		((int, interval, 100, Attr::triggerPostLoad, "Check every this many steps (the first step is always checked). One estimate costs about one InteractionLoop pass (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
 		((bool, dtWasSet, false, , "Whether this engine has set O.dt already; from then on it only lowers O.dt (a corner contact found at a check may stiffen before the next one)."))
 		((long, lastCheck, -1, (Attr::readonly | Attr::noSave), "Step of the last check."))
 		((Real, criticalDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step found at the last check [s].")),

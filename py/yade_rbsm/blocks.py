@@ -49,9 +49,12 @@ def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=F
     RbsmMat, or a non-positive density or thickness raises ValueError naming the problem.
     """
     mat = material
-    if isinstance(mat, (int, str)):
+    if isinstance(mat, (int, str)) and not isinstance(mat, bool):
         from yade import O
-        mat = wrapper.Material.byLabel(mat) if isinstance(mat, str) else O.materials[mat]
+        try:
+            mat = O.materials[mat]  # YADE looks up an index or a label
+        except (IndexError, KeyError, ValueError, RuntimeError):
+            raise ValueError("polygon2d: no material %r in O.materials" % (mat,)) from None
     if not isinstance(mat, wrapper.RbsmMat):
         raise ValueError("polygon2d: material must be an RbsmMat, got %s" % type(mat).__name__)
     if not (isinstance(thickness, (int, float)) and math.isfinite(thickness) and thickness > 0):

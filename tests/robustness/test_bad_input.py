@@ -7,17 +7,16 @@ an unknown label; thickness inf and "1"; a duplicate vertex; RbsmMat young NaN, 
 "1e8" (string); poisson 0.5, −1, NaN; density NaN, inf; frictionAngle NaN; cohesion NaN, inf; an existing
 shape given off-centre vertices and thickness 0; RbsmTimeStepper safetyFactor 0, 1.5, NaN and interval 0;
 Ig2 nIP 0 and 9, interactionDistance < 0, hysteresis < 0; Law2 dampingRatio < 0 and NaN (engine attributes
-with one O.step(), since they are checked when used). scenes/empty_vertices.py and the enlarge case run
-alone, because they abort the process (bugs 3 and 4).
+are checked when set). scenes/empty_vertices.py and the enlarge case run alone: they used to abort the
+process (bugs 3 and 4, fixed).
 Asserted per case: an exception (ValueError, TypeError or RuntimeError) whose message contains the
 keywords below (the object/attribute and the problem), and the scene unchanged (bodies and real
 interactions counted, positions (unless a step ran), every block's vertices).
-Bugs (strict xfail): 5 — polygon2d(SQ, "unknown label") raises AttributeError from blocks.py
-(wrapper.Material.byLabel does not exist) instead of naming the label; 6 — Ig2 nIP 0/9 (checked only when a
-new contact is made), interactionDistance < 0, hysteresis < 0, Law2 dampingRatio < 0 or NaN are accepted
-silently; 3 — Polygon2D.vertices = [] on an existing shape is accepted and the next O.step() aborts YADE
-(exit 134); 4 — Bo1_Polygon2D_Aabb.enlarge < 0 is detected in Bo1::go, but the exception is thrown inside
-the collider's parallel loop: std::terminate, YADE aborts (exit 134) instead of a Python exception.
+Fixed bugs found by this file (kept as regression cases): 5 — an unknown material label raised
+AttributeError from blocks.py; 6 — engine attributes (Ig2 nIP, interactionDistance, hysteresis, Law2
+dampingRatio) were accepted silently; 3 — Polygon2D.vertices = [] was accepted and the next step aborted
+YADE; 4 — Bo1_Polygon2D_Aabb.enlarge < 0 threw inside the collider's parallel loop (abort). All are now
+refused when set, with a ValueError naming the attribute.
 """
 import os
 import subprocess
@@ -42,11 +41,6 @@ KEYWORDS = {
     "ig2_interactionDistance_negative": ["interactiondistance"], "ig2_hysteresis_negative": ["hysteresis"],
     "law_dampingRatio_negative": ["dampingratio"], "law_dampingRatio_nan": ["dampingratio"],
 }
-BUG5 = "bug 5: polygon2d with an unknown material label raises AttributeError (Material.byLabel) in blocks.py"
-BUG6 = "bug 6: engine attribute accepted silently (no check when set nor at the next step)"
-XFAIL = {"poly_material_bad_label": BUG5, "ig2_nIP_0": BUG6, "ig2_nIP_9": BUG6,
-         "ig2_interactionDistance_negative": BUG6, "ig2_hysteresis_negative": BUG6,
-         "law_dampingRatio_negative": BUG6, "law_dampingRatio_nan": BUG6}
 
 
 @pytest.fixture(scope="module")
@@ -54,8 +48,7 @@ def results():
     return run_scene("badinput", {})
 
 
-@pytest.mark.parametrize("case", [pytest.param(c, marks=pytest.mark.xfail(strict=True, reason=XFAIL[c]))
-                                  if c in XFAIL else c for c in sorted(KEYWORDS)])
+@pytest.mark.parametrize("case", sorted(KEYWORDS))
 def test_bad_input_rejected_scene_unchanged(results, case):
     r = results[case]
     print(case, r)
@@ -72,7 +65,6 @@ def run_alone(script_text_or_scene, tmp_path):
     return p.returncode, p.stdout
 
 
-@pytest.mark.xfail(strict=True, reason="bug 3: Polygon2D.vertices = [] accepted; the next O.step() aborts YADE (exit 134)")
 def test_empty_vertices_on_existing_shape(tmp_path):
     rc, out = run_alone(os.path.join(SCENES, "empty_vertices.py"), tmp_path)
     print(rc, out[-600:])
@@ -80,15 +72,12 @@ def test_empty_vertices_on_existing_shape(tmp_path):
     assert rc == 0
 
 
-@pytest.mark.xfail(strict=True, reason="bug 4: Bo1_Polygon2D_Aabb.enlarge < 0 throws inside the collider's parallel "
-                                       "loop: std::terminate, YADE aborts (exit 134) instead of a Python exception")
 def test_bo1_enlarge_negative(tmp_path):
     f = tmp_path / "enlarge.py"
     f.write_text("from yade_rbsm import polygon2d, engines\n"
                  "m = RbsmMat(); O.materials.append(m)\n"
                  "O.bodies.append(polygon2d([(0,0),(1,0),(1,1),(0,1)], m))\n"
-                 "O.engines = engines(enlarge=-1.0)\n"
-                 "try:\n    O.step()\n    print('NO EXCEPTION')\n"
+                 "try:\n    O.engines = engines(enlarge=-1.0)\n    O.step()\n    print('NO EXCEPTION')\n"
                  "except Exception as e:\n    print('raised', type(e).__name__, e)\n")
     rc, out = run_alone(str(f), tmp_path)
     print(rc, out[-600:])
