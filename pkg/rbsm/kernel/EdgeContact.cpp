@@ -147,7 +147,24 @@ EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, 
 	clipLinear(x0, x1 - x0, lo, hi);                              // x >= 0
 	clipLinear(Lr - x0, -(x1 - x0), lo, hi);                      // x <= Lr
 	clipLinear(g0 + maxSep, g1 - g0, lo, hi);                     // d >= -maxSeparation
+	// ... and (iii) the reference polygon's other edges: where two blocks meet corner to corner,
+	// the incident edge passes behind the reference line but leaves the reference block through a
+	// neighbouring edge; the part outside it is no overlap and must not count as penetration.
+	// If that leaves nothing (the overlap is a corner of the reference block poking into the
+	// incident one away from the incident edge), the clip of (i)-(ii) is kept as it was.
 	if (!(lo <= hi)) return c;
+	{
+		const int   nR  = int(R.size());
+		const auto& nRp = (refBody == 1) ? normalsA : normalsB;
+		Real        lo3 = lo, hi3 = hi;
+		for (int j = 0; j < nR; ++j) {
+			if (j == refEdge) continue;
+			// signed distance in front of edge j: nRp[j].(q(lambda) - R[j]) <= maxSep
+			const Real a0 = nRp[j].dot(q0 - R[j]), a1 = nRp[j].dot(q1 - R[j]);
+			clipLinear(maxSep - a0, -(a1 - a0), lo3, hi3);
+		}
+		if (lo3 <= hi3) lo = lo3, hi = hi3;
+	}
 
 	auto xAt = [&](Real l) { return std::clamp(x0 + l * (x1 - x0), Real(0), Lr); };
 	auto dAt = [&](Real l) { return g0 + l * (g1 - g0); };
