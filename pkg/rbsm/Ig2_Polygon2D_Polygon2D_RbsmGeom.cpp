@@ -1,10 +1,14 @@
 #include <pkg/rbsm/Ig2_Polygon2D_Polygon2D_RbsmGeom.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
+#include <core/Scene.hpp>
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
 
+#include <atomic>
+#include <iostream>
 #include <limits>
+#include <sstream>
 
 namespace yade {
 
@@ -49,6 +53,23 @@ namespace {
 	{
 		const Vector2r r = x - s.pos.head<2>();
 		return s.vel.head<2>() + s.angVel.z() * Vector2r(-r.y(), r.x());
+	}
+
+	// Overlaps deeper than this fraction of the smaller block are outside what the small-strain
+	// joint springs represent: reported (a few times per run), like UDEC's "contact overlap too great".
+	constexpr Real deepOverlap = 0.05;
+	std::atomic<int> deepOverlapReports { 0 };
+	void reportDeepOverlap(const Interaction& I, Real overlap, Real size, bool atSetUp, long iter)
+	{
+		const int n = deepOverlapReports.fetch_add(1);
+		if (n >= 5) return;
+		std::ostringstream msg;
+		msg << "yade-rbsm: WARNING: bodies #" << I.getId1() << " and #" << I.getId2() << " overlap by " << overlap << " m, "
+		    << 100 * overlap / size << " % of the smaller block's diameter, at step " << iter
+		    << (atSetUp ? " when their contact is made (blocks placed overlapping? check the input geometry)"
+		                : " (impact too violent for the time step, or blocks too soft?)")
+		    << (n == 4 ? "; further overlap warnings are not shown" : "") << "\n";
+		std::cerr << msg.str();
 	}
 }
 
@@ -115,6 +136,15 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	g->centroid2  = state2.pos.head<2>();
 	g->h1         = rbsm::distanceToLine(g->centroid1, c.p0, c.normal);
 	g->h2         = rbsm::distanceToLine(g->centroid2, c.p0, c.normal);
+
+	const Real minSize = 2 * std::min(A.circumradius, B.circumradius);
+	if (std::max(c.d0, c.d1) > deepOverlap * minSize) {
+		// The input is to blame if the contact is made at the first step of the younger block.
+		const auto& bodies  = scene->bodies->body;
+		const long  born    = std::max(bodies[I->getId1()]->iterBorn, bodies[I->getId2()]->iterBorn);
+		const bool  atSetUp = !existing && scene->iter <= std::max(born, 0L);
+		reportDeepOverlap(*I, std::max(c.d0, c.d1), minSize, atSetUp, scene->iter);
+	}
 
 	const size_t n  = g->weights.size();
 	const Real   dt = scene->dt;

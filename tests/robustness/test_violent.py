@@ -7,9 +7,9 @@
 Checked (scenes/run.py): every position, velocity, force and torque finite (every 10 steps), no exception,
 the largest force finite. Contact damping ξ = 0.1 (the events are meant to come to rest, see
 test_extremes.py). The largest overlap is printed (not asserted: these are not stable RBSM states).
-Warnings: the plugin emits none (no LOG_WARN in pkg/rbsm), also not for the deep overlap set up by the
-user, which is the input's fault: a gap reported to the project (issue 6 report), not asserted here. The
-test only asserts that no warning of the plugin is a false alarm in the drop and projectile scenes.
+Warnings: overlaps deeper than 5 % of the smaller block's diameter are reported by the plugin (a few per
+run); the deep overlap set up by the user must be reported as such ("when their contact is made"), and the
+drop and projectile scenes must not blame the set-up (they may report the violent impact).
 Energy: the deep-overlap scene releases the initial spring energy U0 = ½ kn ℓ δ² (kn = E′/(h1+h2) with h1 = 0.5,
 h2 = 0.2 m, ℓ = 1 m, δ = 0.3 m: 7.1e6 J). The leapfrog does not release it exactly: the kinetic energy after
 the release is at most U0 / (1 − (ω dt/2)²) = U0 / (1 − 0.8²) = 2.8 U0 at the stepper's dt = 0.8 × 2/ω;
@@ -23,7 +23,8 @@ import re
 
 from conftest import run_scene, rect
 
-PLUGIN_WARNING = re.compile(r"WARN.*(Rbsm|Polygon2D|Ig2_Polygon2D|Law2_Rbsm|Bo1_Polygon2D)")
+PLUGIN_WARNING = re.compile(r"yade-rbsm: WARNING: .*")
+SETUP_OVERLAP = re.compile(r"yade-rbsm: WARNING: bodies #\d+ and #\d+ overlap .* when their contact is made")
 
 
 def finite_run(r, out, label):
@@ -42,7 +43,8 @@ def test_drop_onto_slope():
     blocks.append({"v": rect(2.2, 20, 1, 1), "vel": [0, 0], "w": 0.3})
     r, out = run_scene("run", {"blocks": blocks, "contact_damping": 0.1, "steps": 3000}, output=True)
     finite_run(r, out, "drop")
-    assert not PLUGIN_WARNING.search(out)
+    # the impact may be reported as too violent, but not blamed on the set-up geometry
+    assert not SETUP_OVERLAP.search(out)
 
 
 def test_projectile_into_wall():
@@ -53,7 +55,7 @@ def test_projectile_into_wall():
     blocks.append({"v": rect(-3, 1.4, 0.2, 0.2), "vel": [50, 0]})
     r, out = run_scene("run", {"blocks": blocks, "contact_damping": 0.1, "steps": 3000}, output=True)
     finite_run(r, out, "projectile")
-    assert not PLUGIN_WARNING.search(out)
+    assert not SETUP_OVERLAP.search(out)
 
 
 def test_deep_overlap_at_setup():
@@ -63,6 +65,8 @@ def test_deep_overlap_at_setup():
     finite_run(r, out, "deep overlap")
     kn = 1e8 * 0.8 / (1.2 * 0.6) / 0.7   # plane strain E' / (h1 + h2), h1 + h2 = 0.5 + 0.2 m
     bound = 0.5 * kn * 1.0 * 0.3 ** 2 / (1 - 0.8 ** 2)
-    print("deep overlap: max KE %.3g J, spring energy bound %.3g J; plugin warnings: %d (none expected from "
-          "the plugin: gap reported)" % (r["max_ke"], bound, len(PLUGIN_WARNING.findall(out))))
+    print("deep overlap: max KE %.3g J, spring energy bound %.3g J; plugin warnings: %d"
+          % (r["max_ke"], bound, len(PLUGIN_WARNING.findall(out))))
     assert r["max_ke"] <= bound
+    # the input is the cause: the plugin says so, naming both bodies
+    assert SETUP_OVERLAP.search(out), out[-2000:]
