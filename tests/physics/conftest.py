@@ -1,37 +1,18 @@
-"""Helpers for the physics tests: run a scene of scenes/ through the YADE launcher and parse the
-one JSON line it prints after the marker RBSM_RESULT."""
-import json
+"""Helpers for the physics tests: run a scene of scenes/ through the YADE launcher (tests/support/yadescene.py).
+"""
+import functools
 import os
-import subprocess
+import sys
 
 import pytest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENES = os.path.join(HERE, "scenes")
-MARKER = "RBSM_RESULT "
+sys.path.insert(0, os.path.join(HERE, "..", "support"))
+import yadescene as _scenes  # noqa: E402
 
-
-def launcher():
-    exe = os.environ.get("RBSM_LAUNCHER")
-    if not exe:
-        build = os.environ.get("RBSM_BUILD_DIR", os.path.join(HERE, "..", "..", "build"))
-        exe = os.path.join(build, "yade-rbsm")
-    if not os.access(exe, os.X_OK):
-        pytest.fail("launcher %s not found (build the project, or set RBSM_LAUNCHER)" % exe)
-    return exe
-
-
-def run_scene(scene, params=None, threads=1, timeout=300):
-    """Runs scenes/<scene>.py with `yade -j threads -n -x scene.py '<params as JSON>'` and returns the
-    dict the scene printed (one line 'RBSM_RESULT {...}')."""
-    cmd = [launcher(), "-j", str(threads), "-n", "-x", os.path.join(SCENES, scene + ".py"),
-           json.dumps(params or {})]
-    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=timeout,
-                       universal_newlines=True, cwd=SCENES)
-    lines = [l for l in p.stdout.splitlines() if l.startswith(MARKER)]
-    if p.returncode != 0 or len(lines) != 1:
-        pytest.fail("scene %s %r failed (exit %d):\n%s" % (scene, params, p.returncode, p.stdout[-4000:]))
-    return json.loads(lines[0][len(MARKER):])
+launcher = _scenes.launcher
+run_scene = functools.partial(_scenes.run_scene, SCENES)
 
 
 @pytest.fixture

@@ -1,19 +1,9 @@
 """Shared pieces of the physics scenes (imported inside a yade script: yade's names are passed in)."""
-import json
+import os
 import sys
 
-MARKER = "RBSM_RESULT "
-
-
-def params():
-    """The scene's parameters: one JSON object in argv[1] (may be absent)."""
-    return json.loads(sys.argv[1]) if len(sys.argv) > 1 and sys.argv[1] else {}
-
-
-def emit(result):
-    """Prints the result as one JSON line after the marker and flushes."""
-    sys.stdout.write(MARKER + json.dumps(result) + "\n")
-    sys.stdout.flush()
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from yadescene import MARKER, emit, params  # noqa: E402,F401 (re-exported to the scenes)
 
 
 def kinetic_energy(O, ids=None):
