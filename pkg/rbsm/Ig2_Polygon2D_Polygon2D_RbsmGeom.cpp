@@ -105,7 +105,8 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		const auto*  ph = (ip && ip->getClassIndex() == RbsmPhys::getClassIndexStatic()) ? static_cast<const RbsmPhys*>(ip) : nullptr;
 		if (ph && ph->kn > 0 && ph->nIntact() > 0) maxSeparation += 2 * ph->tensileStrength / ph->kn;
 	}
-	const rbsm::EdgeContact c = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, 2 * std::min(A.circumradius, B.circumradius));
+	const Real              minSize = 2 * std::min(A.circumradius, B.circumradius); // the smaller block's diameter
+	const rbsm::EdgeContact c       = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, minSize);
 	if (!existing && !(c.touching && c.length > 0)) return false; // no new contact
 	if (existing && !c.touching) {
 		// The blocks of an existing joint no longer face each other within reach: YADE expects the
@@ -137,7 +138,6 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	g->h1         = rbsm::distanceToLine(g->centroid1, c.p0, c.normal);
 	g->h2         = rbsm::distanceToLine(g->centroid2, c.p0, c.normal);
 
-	const Real minSize = 2 * std::min(A.circumradius, B.circumradius);
 	if (std::max(c.d0, c.d1) > deepOverlap * minSize) {
 		// The input is to blame if the contact is made at the first step of the younger block.
 		const auto& bodies  = scene->bodies->body;
