@@ -33,8 +33,9 @@ import math
 from dataclasses import dataclass, field
 from typing import List, Optional, Sequence, Tuple
 
-__all__ = ["Block", "SlopeBlocks", "brick_blocks", "polygon_area", "region_area",
-           "build_scene", "bond_and_break", "break_crack", "unbalanced_ratio", "settle"]
+__all__ = ["Block", "SlopeBlocks", "brick_blocks", "column_blocks", "voronoi_slope_blocks", "slope_polygon",
+           "cut_polygons", "polygon_area", "region_area", "check_polygon", "build_scene", "bond_and_break",
+           "break_crack", "break_joints", "unbalanced_ratio", "settle"]
 
 
 def polygon_area(poly):
@@ -140,6 +141,7 @@ class Block:
     kind: str = "slope"  # slope | foundation | wall
     row: int = -1
     id: int = -1  # body id once in the scene
+    layer: int = -1  # index in SlopeBlocks.layers (-1: no layers given)
 
 
 @dataclass
@@ -152,6 +154,10 @@ class SlopeBlocks:
     crack: Optional[Tuple[float, float]] = None
     joints: List[Sequence[Tuple[float, float]]] = field(default_factory=list)
     ids: List[int] = field(default_factory=list)
+    cracks: List[Sequence[Tuple[float, float]]] = field(default_factory=list)  # broken after bonding
+    layers: list = field(default_factory=list)  # [(top polyline or None, material)] from the bottom up
+    polygon: List[Tuple[float, float]] = field(default_factory=list)  # the slope region, CCW
+    pattern: str = "bricks"
 
     @property
     def free(self):
@@ -159,20 +165,28 @@ class SlopeBlocks:
 
 
 def brick_blocks(surface, base, brick_w, brick_h, joints=(), crack=None, foundation=1.0, wall=1.0,
-                 min_area=None, stagger=0.5):
+                 min_area=None, stagger=0.5, cracks=(), layers=()):
     """Cut the slope under the ground polyline *surface* (strictly increasing x) and above *base*
-    into bricks (see the module docstring). *joints*: polylines (strictly increasing x) along which
-    the blocks are cut too (pre-existing joints, e.g. a slip plane). *crack*: ``(xc, yc)`` vertical
-    crack from the ground down to ``yc``. Returns a :class:`SlopeBlocks`; the slope blocks come
-    first, then the foundation and the walls (fixed)."""
-    surf = [(float(x), float(y)) for x, y in surface]
-    if any(b[0] <= a[0] for a, b in zip(surf[:-1], surf[1:])):
-        raise ValueError("brick_blocks: surface x must be strictly increasing")
-    if any(y <= base for _, y in surf):
-        raise ValueError("brick_blocks: the ground must be above the base everywhere")
-    if brick_w <= 0 or brick_h <= 0:
-        raise ValueError("brick_blocks: brick sizes must be > 0")
-    joints = [[(float(x), float(y)) for x, y in j] for j in joints]
+    into bricks (see the module docstring). *joints*: polylines along which the blocks are cut too
+    (pre-existing joints, e.g. a slip plane; bonded). *cracks*: polylines along which the blocks are
+    cut and whose joints :func:`bond_and_break` breaks after bonding (cracks with strictly increasing
+    x are cut exactly like *joints*, others, e.g. vertical or folded ones, by :func:`cut_polygons`).
+    *crack*: ``(xc, yc)`` vertical crack from the ground down to ``yc``. *layers*: ``[(top polyline,
+    material), ...]`` from the bottom up, the last top may be None (the ground): the blocks are cut
+    along the tops and each takes the layer containing its centroid (``Block.layer``). Returns a
+    :class:`SlopeBlocks`; the slope blocks come first, then the foundation and the walls (fixed)."""
+    surf, base, joints, cracks, layers, foundation, wall = _common_args(surface, base, joints, cracks, layers,
+                                                                      foundation, wall, "brick_blocks")
+    brick_w = _number("brick_blocks: brick_w", brick_w)
+    brick_h = _number("brick_blocks: brick_h", brick_h)
+    if crack is not None:
+        crack = _pts("brick_blocks: crack", [crack], 1)[0]
+    def mono(l):
+        return all(b[0] > a[0] for a, b in zip(l[:-1], l[1:]))
+    generic = [c for c in cracks if not mono(c)] + [j for j in joints if not mono(j)]
+    cut_tops = [t for t, _ in layers if t is not None]
+    all_cracks = cracks
+    joints = [j for j in joints if mono(j)] + [c for c in cracks if mono(c)] + cut_tops
     x0, xn = surf[0][0], surf[-1][0]
     ytop = max(y for _, y in surf)
     scale = max(xn - x0, ytop - base)
@@ -225,26 +239,477 @@ def brick_blocks(surface, base, brick_w, brick_h, joints=(), crack=None, foundat
                     dropped += a
                     continue
                 blocks.append(Block(p, a, False, "slope", r))
+    if generic:
+        rows = {}
+        for b in blocks:
+            rows.setdefault(id(b.vertices), b.row)
+        pieces = cut_polygons([b.vertices for b in blocks], generic, eps)
+        blocks2 = []
+        for p in pieces:
+            a = polygon_area(p)
+            if a < min_area:
+                dropped += a
+                continue
+            blocks2.append(Block(p, a, False, "slope"))
+        blocks = blocks2
+    if layers:
+        _assign_layers(blocks, layers)
     slope_area = region_area(surf, base)
+    blocks += _fixed_blocks(surf, base, foundation, wall)
+    return SlopeBlocks(blocks, surf, float(base), slope_area, dropped, crack, joints, cracks=all_cracks, layers=layers,
+                       polygon=slope_polygon(surf, base), pattern="bricks")
+
+
+def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), layers=(), foundation=1.0, wall=1.0,
+                  min_area=None):
+    """Columns for toppling: the slope under the ground polyline *surface* (strictly increasing x)
+    cut by vertical joints every *width* from the left end (and at every kink of the ground and of
+    the base) and, if *block_h* is given, by horizontal cross joints at ``min(base) + k·block_h``
+    (aligned from column to column). *base*: a number (flat base) or a stepped base polyline from the
+    left to the right end of the slope, x non-decreasing (a repeated x is a vertical riser), below
+    the ground; each column stands on its own step when the steps are *width* wide. The fixed
+    foundation follows the base (one block per base segment, ``foundation`` m below its lowest point)
+    and the walls stand on it at both ends. *joints*, *cracks*, *layers*: as in
+    :func:`brick_blocks` (cut with :func:`cut_polygons`)."""
+    who = "column_blocks"
+    surf = _monotone("%s: surface" % who, surface)
+    x0, xn = surf[0][0], surf[-1][0]
+    if isinstance(base, (int, float)) and not isinstance(base, bool):
+        b0 = _number("%s: base" % who, base, positive=False)
+        basel = [(x0, b0), (xn, b0)]
+    else:
+        basel = _monotone("%s: base polyline" % who, base, strict=False)
+        if basel[0][0] != x0 or basel[-1][0] != xn:
+            raise ValueError("%s: the base polyline must run from x = %g to x = %g (the ends of the surface)"
+                             % (who, x0, xn))
+    ymin = min(y for _, y in basel)
+    surf, _, joints, cracks, layers, foundation, wall = _common_args(surf, ymin - 1e-9 * (1 + abs(ymin)), joints,
+                                                                     cracks, layers, foundation, wall, who)
+    width = _number("%s: width" % who, width)
+    if block_h is not None:
+        block_h = _number("%s: block_h" % who, block_h)
+    for (xa, ya), (xb, yb) in zip(basel[:-1], basel[1:]):
+        for x, y in ((xa, ya), (xb, yb)):
+            if y >= _interp_y(surf, x):
+                raise ValueError("%s: the base must be below the ground (at x = %g)" % (who, x))
+    bsegs = [(a, b) for a, b in zip(basel[:-1], basel[1:]) if b[0] > a[0]]
+    ytop = max(y for _, y in surf)
+    scale = max(xn - x0, ytop - ymin)
+    eps = 1e-12 * scale
+    if min_area is None:
+        min_area = 1e-3 * width * (block_h or width)
+    xs = set(x for x, _ in surf) | set(x for x, _ in basel)
+    k = 1
+    while x0 + k * width < xn - eps:
+        xs.add(x0 + k * width)
+        k += 1
+    xs = sorted(xs)
+    pieces = []
+    for xa, xb in zip(xs[:-1], xs[1:]):
+        g = _segment_at(surf, xa, xb)
+        bl = [_Line(a, b) for a, b in bsegs if a[0] <= 0.5 * (xa + xb) <= b[0]][0]
+        quad = _clean([(xa, bl.y(xa)), (xb, bl.y(xb)), (xb, g.y(xb)), (xa, g.y(xa))], eps)
+        if not quad:
+            continue
+        col = [quad]
+        if block_h is not None:
+            levels = []
+            y = ymin + block_h
+            while y < ytop - eps:
+                levels.append(y)
+                y += block_h
+            for y in levels:
+                ln = _Line((xa, y), (xb, y))
+                new = []
+                for p in col:
+                    for below in (True, False):
+                        q = _clip(p, ln, below, eps)
+                        if q:
+                            new.append(q)
+                col = new
+        pieces += col
+    cuts = joints + cracks + [t for t, _ in layers if t is not None]
+    blocks, dropped = _finish(pieces, cuts, min_area, layers)
+    region = [(x0, basel[0][1])] + basel[1:] + list(reversed(surf))
+    region = [p for i, p in enumerate(region) if p != region[i - 1]]
+    slope_area = polygon_area(region)
+    if foundation > 0:
+        yf = ymin - foundation
+        for a, b in bsegs:
+            f = _clean([(a[0], yf), (b[0], yf), b, a], eps)
+            blocks.append(Block(f, polygon_area(f), True, "foundation"))
+        if wall > 0:
+            for x, xw in ((x0 - wall, x0), (xn, xn + wall)):
+                yb = basel[0][1] if xw == x0 else basel[-1][1]
+                f = [(x, yf), (xw, yf), (xw, yb), (x, yb)]
+                blocks.append(Block(f, polygon_area(f), True, "foundation"))
+    if wall > 0:
+        for w in ([(x0 - wall, basel[0][1]), (x0, basel[0][1]), (x0, surf[0][1]), (x0 - wall, surf[0][1])],
+                  [(xn, basel[-1][1]), (xn + wall, basel[-1][1]), (xn + wall, surf[-1][1]), (xn, surf[-1][1])]):
+            blocks.append(Block(w, polygon_area(w), True, "wall"))
+    return SlopeBlocks(blocks, surf, ymin, slope_area, dropped, None, joints, cracks=cracks, layers=layers,
+                       polygon=region, pattern="columns")
+
+
+def _voronoi_module():
+    try:
+        from . import voronoi
+        return voronoi
+    except ImportError:  # loaded as a plain file (tests without YADE)
+        import importlib.util
+        import os
+        path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "voronoi.py")
+        spec = importlib.util.spec_from_file_location("rbsm_voronoi", path)
+        mod = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(mod)
+        return mod
+
+
+def voronoi_slope_blocks(surface=None, base=0.0, n=None, spacing=None, seed=0, min_distance=0.0, sites=None,
+                         polygon=None, joints=(), cracks=(), layers=(), foundation=1.0, wall=1.0, min_area=None):
+    """Random Voronoi blocks (CGAL, :func:`yade_rbsm.voronoi.voronoi_blocks`) tiling the slope under
+    the ground polyline *surface* above *base* (or the simple polygon *polygon*), then cut along
+    *joints*, *cracks* and the layer tops with :func:`cut_polygons`; *n* / *spacing* / *sites*,
+    *seed*, *min_distance*: as in voronoi_blocks. *layers*: as in :func:`brick_blocks`. The fixed
+    foundation and walls as for bricks (with *polygon*: only a foundation under its lowest point,
+    spanning its width)."""
+    who = "voronoi_slope_blocks"
+    if (surface is None) == (polygon is None):
+        raise ValueError("%s: give exactly one of surface (with base) and polygon" % who)
+    if polygon is not None:
+        poly = check_polygon(polygon, "%s: slope polygon" % who)
+        if polygon_area(poly) < 0:
+            poly = list(reversed(poly))
+        xs, ys = [p[0] for p in poly], [p[1] for p in poly]
+        surf = [(min(xs), max(ys)), (max(xs), max(ys))]
+        base = min(ys)
+        joints = [_pts("%s: joints[%d]" % (who, k), j, 2) for k, j in enumerate(joints)]
+        cracks = [_pts("%s: cracks[%d]" % (who, k), j, 2) for k, j in enumerate(cracks)]
+        layers = _check_layers(layers, min(xs), max(xs)) if layers else []
+        slope_area = polygon_area(poly)
+    else:
+        surf, base, joints, cracks, layers, foundation, wall = _common_args(surface, base, joints, cracks, layers,
+                                                                          foundation, wall, who)
+        poly = slope_polygon(surf, base)
+        slope_area = region_area(surf, base)
+    vor = _voronoi_module()
+    t = vor.voronoi_tessellation(poly, n=n, spacing=spacing, seed=seed, min_distance=min_distance, sites=sites)
+    mean = slope_area / max(1, len(t.blocks))
+    if min_area is None:
+        min_area = 1e-6 * mean
+    blocks, dropped = _finish([list(b) for b in t.blocks], joints + cracks + [tp for tp, _ in layers if tp is not None],
+                              min_area, layers)
+    dropped += t.dropped_area
+    if polygon is not None:
+        if foundation > 0:
+            f = [(min(xs) - wall, base - foundation), (max(xs) + wall, base - foundation), (max(xs) + wall, base),
+                 (min(xs) - wall, base)]
+            blocks.append(Block(f, polygon_area(f), True, "foundation"))
+    else:
+        blocks += _fixed_blocks(surf, base, foundation, wall)
+    return SlopeBlocks(blocks, surf, base, slope_area, dropped, None, joints, cracks=cracks, layers=layers,
+                       polygon=poly, pattern="voronoi")
+
+
+# ---------------------------------------------------------------------------------------------
+# input checks
+# ---------------------------------------------------------------------------------------------
+def _pts(name, seq, at_least=1):
+    """List of finite (x, y) float pairs; ValueError naming *name* otherwise."""
+    if seq is None:
+        raise ValueError("%s: none given" % name)
+    try:
+        pts = [(float(x), float(y)) for x, y in seq]
+    except (TypeError, ValueError):
+        raise ValueError("%s must be a sequence of (x, y) pairs, got %r" % (name, seq)) from None
+    if len(pts) < at_least:
+        raise ValueError("%s needs at least %d points, got %d%s" % (name, at_least, len(pts),
+                                                                    " (empty list)" if not pts else ""))
+    if not all(math.isfinite(c) for p in pts for c in p):
+        raise ValueError("%s contains NaN or inf" % name)
+    return pts
+
+
+def _monotone(name, seq, strict=True):
+    pts = _pts(name, seq, 2)
+    bad = [a for a, b in zip(pts[:-1], pts[1:]) if (b[0] <= a[0] if strict else b[0] < a[0])]
+    if bad:
+        raise ValueError("%s: x must be %s increasing (at x = %g)" % (name, "strictly" if strict else "non-decreasingly",
+                                                                        bad[0][0]))
+    return pts
+
+
+def _number(name, v, positive=True, allow_zero=False):
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise ValueError("%s must be a finite number, got %r" % (name, v))
+    if positive and (v < 0 or (v == 0 and not allow_zero)):
+        raise ValueError("%s must be %s 0, got %r" % (name, ">=" if allow_zero else ">", v))
+    return float(v)
+
+
+def _seg_intersect(p, q, r, s):
+    """Closed segments pq and rs intersect (touching counts)."""
+    def orient(a, b, c):
+        v = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+        return (v > 0) - (v < 0)
+
+    def on(a, b, c):
+        return min(a[0], b[0]) <= c[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= c[1] <= max(a[1], b[1])
+    o1, o2, o3, o4 = orient(p, q, r), orient(p, q, s), orient(r, s, p), orient(r, s, q)
+    if o1 != o2 and o3 != o4:
+        return True
+    return ((o1 == 0 and on(p, q, r)) or (o2 == 0 and on(p, q, s)) or (o3 == 0 and on(r, s, p))
+            or (o4 == 0 and on(r, s, q)))
+
+
+def check_polygon(poly, name="slope polygon"):
+    """The vertices of a simple polygon (either orientation) as float pairs; ValueError naming the
+    problem: fewer than 3 vertices, NaN/inf, a repeated vertex, zero area, edges that cross or touch
+    (not simple)."""
+    pts = _pts(name, poly, 3)
+    if len(set(pts)) != len(pts):
+        raise ValueError("%s: repeated vertex" % name)
+    if polygon_area(pts) == 0:
+        raise ValueError("%s has zero area" % name)
+    n = len(pts)
+    for i in range(n):
+        for j in range(i + 1, n):
+            if j == i + 1 or (i == 0 and j == n - 1):
+                continue  # adjacent edges share a vertex
+            if _seg_intersect(pts[i], pts[(i + 1) % n], pts[j], pts[(j + 1) % n]):
+                raise ValueError("%s is not simple: edge %d (%g, %g)-(%g, %g) meets edge %d" % (
+                    name, i, pts[i][0], pts[i][1], pts[(i + 1) % n][0], pts[(i + 1) % n][1], j))
+    return pts
+
+
+def _check_layers(layers, x0, xn):
+    """[(top polyline or None, material)] from the bottom up; only the last top may be None (the
+    ground)."""
+    out = []
+    for k, item in enumerate(layers):
+        try:
+            top, mat = item
+        except (TypeError, ValueError):
+            raise ValueError("layers[%d] must be a (top polyline, material) pair" % k) from None
+        if top is None:
+            if k != len(layers) - 1:
+                raise ValueError("layers[%d]: only the last (top) layer may have no top polyline" % k)
+        else:
+            top = _monotone("layers[%d] top polyline" % k, top)
+            if top[0][0] > x0 or top[-1][0] < xn:
+                raise ValueError("layers[%d] top polyline must span the slope, x in [%g, %g]" % (k, x0, xn))
+        if mat is None:
+            raise ValueError("layers[%d]: no material" % k)
+        out.append((top, mat))
+    return out
+
+
+def _interp_y(poly, x):
+    """y of the polyline (strictly increasing x) at x, constant beyond its ends."""
+    if x <= poly[0][0]:
+        return poly[0][1]
+    if x >= poly[-1][0]:
+        return poly[-1][1]
+    for a, b in zip(poly[:-1], poly[1:]):
+        if a[0] <= x <= b[0]:
+            return _Line(a, b).y(x)
+    return poly[-1][1]
+
+
+def polygon_centroid(poly):
+    a = cx = cy = 0.0
+    n = len(poly)
+    ox, oy = poly[0]
+    for i in range(n):
+        x0, y0 = poly[i][0] - ox, poly[i][1] - oy
+        x1, y1 = poly[(i + 1) % n][0] - ox, poly[(i + 1) % n][1] - oy
+        c = x0 * y1 - x1 * y0
+        a += c
+        cx += c * (x0 + x1)
+        cy += c * (y0 + y1)
+    return cx / (3 * a) + ox, cy / (3 * a) + oy
+
+
+def _layer_of(layers, c):
+    for k, (top, _) in enumerate(layers):
+        if top is None or c[1] < _interp_y(top, c[0]):
+            return k
+    return len(layers) - 1
+
+
+def _assign_layers(blocks, layers):
+    for b in blocks:
+        if b.kind == "slope":
+            b.layer = _layer_of(layers, polygon_centroid(b.vertices))
+
+
+# ---------------------------------------------------------------------------------------------
+# cutting convex blocks along any polyline (joints, cracks, layer boundaries)
+# ---------------------------------------------------------------------------------------------
+def _clean(poly, eps):
+    res = []
+    for p in poly:
+        if not res or (abs(p[0] - res[-1][0]) > eps or abs(p[1] - res[-1][1]) > eps):
+            res.append(p)
+    while len(res) > 1 and abs(res[0][0] - res[-1][0]) <= eps and abs(res[0][1] - res[-1][1]) <= eps:
+        res.pop()
+    changed = True
+    while changed and len(res) >= 3:
+        changed = False
+        for i in range(len(res)):
+            a, b, c = res[i - 1], res[i], res[(i + 1) % len(res)]
+            cr = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0])
+            L = math.hypot(c[0] - a[0], c[1] - a[1])
+            if abs(cr) <= eps * max(L, eps):
+                del res[i]
+                changed = True
+                break
+    return res if len(res) >= 3 else []
+
+
+def _split_convex(poly, a, b, eps):
+    """Split the convex CCW polygon *poly* by the line through the segment a-b if the *segment*
+    reaches into its interior; returns [left, right] or None. The crossing point on an edge is
+    computed from the edge's end points in lexicographic order, so two blocks sharing the edge get
+    bit-identical points."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    L = math.hypot(dx, dy)
+
+    def side(p):
+        return (dx * (p[1] - a[1]) - dy * (p[0] - a[0])) / L
+
+    s = [side(p) for p in poly]
+    if max(s) <= eps or min(s) >= -eps:
+        return None
+    n = len(poly)
+    left, right, ts = [], [], []
+    for i in range(n):
+        p, q = poly[i], poly[(i + 1) % n]
+        sp, sq = s[i], s[(i + 1) % n]
+        if sp >= -eps:
+            left.append(p)
+        if sp <= eps:
+            right.append(p)
+        if abs(sp) <= eps:
+            ts.append(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (L * L))
+        if (sp > eps and sq < -eps) or (sp < -eps and sq > eps):
+            (u, su), (v, sv) = sorted([(p, sp), (q, sq)])
+            t = su / (su - sv)
+            x = (u[0] + t * (v[0] - u[0]), u[1] + t * (v[1] - u[1]))
+            left.append(x)
+            right.append(x)
+            ts.append(((x[0] - a[0]) * dx + (x[1] - a[1]) * dy) / (L * L))
+    if not ts or max(ts) <= eps / L or min(ts) >= 1 - eps / L:
+        return None  # the line crosses the block, the segment does not reach it
+    return [q for q in (_clean(left, eps), _clean(right, eps)) if q]
+
+
+def cut_polygons(polys, polylines, eps=None):
+    """Cut convex CCW polygons along polylines (any direction, any number of vertices): every
+    polygon that a segment of a polyline reaches into is split in two by the segment's line (the
+    cut runs across the whole block, so a block containing a kink or an end of the polyline is cut
+    a little beyond it: the extension is an ordinary joint). Pieces stay convex and CCW; blocks on
+    either side of a cut share its end points exactly. Returns the list of pieces."""
+    polys = [list(p) for p in polys]
+    if not polys:
+        return []
+    if eps is None:
+        xs = [p[0] for q in polys for p in q]
+        ys = [p[1] for q in polys for p in q]
+        eps = 1e-12 * max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
+    for line in polylines:
+        for a, b in zip(line[:-1], line[1:]):
+            if a == b:
+                continue
+            out = []
+            for p in polys:
+                r = _split_convex(p, a, b, eps)
+                out.extend(r if r else [p])
+            polys = out
+    return polys
+
+
+def _finish(blocks_v, extra_cuts, min_area, layers):
+    """Cut slope block vertex lists along *extra_cuts*, drop slivers; returns (Blocks, dropped)."""
+    pieces = cut_polygons(blocks_v, extra_cuts) if extra_cuts else blocks_v
+    out, dropped = [], 0.0
+    for p in pieces:
+        a = polygon_area(p)
+        if a < min_area:
+            dropped += a
+            continue
+        out.append(Block(p, a, False, "slope"))
+    if layers:
+        _assign_layers(out, layers)
+    return out, dropped
+
+
+def slope_polygon(surface, base):
+    """The slope region (CCW polygon) under the ground polyline *surface* and above y = *base*."""
+    surf = _monotone("surface", surface)
+    return [(surf[0][0], float(base)), (surf[-1][0], float(base))] + list(reversed(surf))
+
+
+def _fixed_blocks(surf, base, foundation, wall):
+    x0, xn = surf[0][0], surf[-1][0]
+    out = []
     if foundation > 0:
         f = [(x0 - wall, base - foundation), (xn + wall, base - foundation), (xn + wall, base), (x0 - wall, base)]
-        blocks.append(Block(f, polygon_area(f), True, "foundation"))
+        out.append(Block(f, polygon_area(f), True, "foundation"))
     if wall > 0:
         for w in ([(x0 - wall, base), (x0, base), (x0, surf[0][1]), (x0 - wall, surf[0][1])],
                   [(xn, base), (xn + wall, base), (xn + wall, surf[-1][1]), (xn, surf[-1][1])]):
-            blocks.append(Block(w, polygon_area(w), True, "wall"))
-    return SlopeBlocks(blocks, surf, float(base), slope_area, dropped, crack, joints)
+            out.append(Block(w, polygon_area(w), True, "wall"))
+    return out
+
+
+def _common_args(surface, base, joints, cracks, layers, foundation, wall, who):
+    surf = _monotone("%s: surface" % who, surface)
+    base = _number("%s: base" % who, base, positive=False)
+    if any(y <= base for _, y in surf):
+        raise ValueError("%s: the ground must be above the base everywhere" % who)
+    joints = [_pts("%s: joints[%d]" % (who, k), j, 2) for k, j in enumerate(joints)]
+    cracks = [_pts("%s: cracks[%d]" % (who, k), j, 2) for k, j in enumerate(cracks)]
+    layers = _check_layers(layers, surf[0][0], surf[-1][0]) if layers else []
+    foundation = _number("%s: foundation" % who, foundation, allow_zero=True)
+    wall = _number("%s: wall" % who, wall, allow_zero=True)
+    for k, c in enumerate(joints + cracks):
+        if not _meets_region(c, surf, base):
+            raise ValueError("%s: %s misses the slope" % (who, ("joints[%d]" % k) if k < len(joints)
+                                                           else ("cracks[%d]" % (k - len(joints)))))
+    return surf, base, joints, cracks, layers, foundation, wall
+
+
+def _meets_region(line, surf, base):
+    """Some point of the polyline lies inside the slope region (sampled along its segments)."""
+    for a, b in zip(line[:-1], line[1:]):
+        for k in range(65):
+            t = k / 64.0
+            x, y = a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])
+            if surf[0][0] < x < surf[-1][0] and base < y < _interp_y(surf, x):
+                return True
+    return False
 
 
 # ---------------------------------------------------------------------------------------------
 # scene (needs YADE)
 # ---------------------------------------------------------------------------------------------
-def build_scene(sb, material, thickness=1.0):
+def build_scene(sb, material=None, thickness=1.0):
     """Append the blocks of *sb* to O.bodies (slope blocks free, foundation and walls fixed); sets
-    ``Block.id`` and ``sb.ids`` and each body's refPos (for displacements). Returns the ids."""
+    ``Block.id`` and ``sb.ids`` and each body's refPos (for displacements). Returns the ids.
+    With layers (``sb.layers``) each slope block takes its layer's material, the fixed blocks
+    *material* (default: the bottom layer's); the joints between layers then take the weaker
+    material (Ip2_RbsmMat_RbsmMat_RbsmPhys)."""
     from yade import O
     from .blocks import polygon2d
-    bodies = [polygon2d(b.vertices, material, thickness=thickness, fixed=b.fixed) for b in sb.blocks]
+    if material is None and not sb.layers:
+        raise ValueError("build_scene: give a material (the blocks have no layers)")
+
+    def mat(b):
+        if sb.layers and not b.fixed:
+            return sb.layers[b.layer][1]
+        return material if material is not None else sb.layers[0][1]
+    bodies = [polygon2d(b.vertices, mat(b), thickness=thickness, fixed=b.fixed) for b in sb.blocks]
     ids = O.bodies.append(bodies)
     for b, i in zip(sb.blocks, ids):
         b.id = i
@@ -272,15 +737,45 @@ def break_crack(sb, tol=None):
     return n
 
 
+def _seg_dist(p, a, b):
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    L2 = dx * dx + dy * dy
+    t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2))
+    return math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy)
+
+
+def break_joints(polylines, tol=None):
+    """Break (RbsmPhys.breakJoint) every joint whose contact segment lies on a segment of one of
+    the *polylines* (both ends within *tol*, default 1e-6 x the scene size). Returns the number
+    broken."""
+    from yade import O
+    segs = [(a, b) for l in polylines for a, b in zip(l[:-1], l[1:])]
+    if not segs:
+        return 0
+    if tol is None:
+        size = max(max(abs(c) for s in segs for p in s for c in p), 1.0)
+        tol = 1e-6 * size
+    n = 0
+    for I in O.interactions:
+        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
+            continue
+        p0, p1 = (I.geom.p0[0], I.geom.p0[1]), (I.geom.p1[0], I.geom.p1[1])
+        if any(_seg_dist(p0, a, b) <= tol and _seg_dist(p1, a, b) <= tol for a, b in segs):
+            I.phys.breakJoint()
+            n += 1
+    return n
+
+
 def bond_and_break(sb):
     """Bond every initial joint (ip2.setCohesionNow for the first step), take that step, then break
-    the crack joints. Returns (number of joints, number broken)."""
+    the joints of the crack (``sb.crack``) and of the crack polylines (``sb.cracks``). Returns
+    (number of joints, number broken)."""
     from yade import O
     ip2 = [f for e in O.engines if hasattr(e, "physDispatcher") for f in e.physDispatcher.functors][0]
     ip2.setCohesionNow = True
     O.step()
     nj = sum(1 for I in O.interactions if I.isReal)
-    return nj, break_crack(sb)
+    return nj, break_crack(sb) + break_joints(sb.cracks)
 
 
 def unbalanced_ratio(ids=None, gravity=None):
