@@ -15,12 +15,35 @@ the sliding one:
 
 ``FS = Σ(c ℓ t + N tanφ) / |Σ T|``. Forces are returned in kN (per metre of thickness for
 thickness 1), ready to print next to :func:`limit_equilibrium.fellenius_polyline`.
+
+:func:`contact_fs_circle` does the same along a circle ``(xc, yc, R)``: the joints whose contact
+segment midpoint lies within ``band`` of the circle (``|dist - R| <= band``) and whose blocks are
+on opposite sides (centroid inside / outside); the sliding block is the one inside; the driving
+direction ``d`` at a joint is the circle's tangent in the sense of the rotation of the sliding mass
+(clockwise if the weights of the blocks inside the circle have their centroid right of the centre,
+i.e. ``Σ m (x - xc) > 0``, as in Fellenius' driving moment).
+
+:func:`slipping_surface` finds the surface of slipping joints: the real joints with at least
+``min_slipping`` slipping integration points (``phys.nSlipping``) are linked when their contact
+segments share an end (within *tol*); the largest connected set (by length) is the surface,
+returned as a polyline (the end points of its joints ordered by increasing x) with the joints.
+Joints are linked when their contact segments come within *tol* of each other (default half the
+median length of the scene's joints: a sliding block's contact may cover only part of its edge); point contacts
+(length < 1 % of the median) are left out.
+:func:`slip_surface_fs` evaluates :func:`contact_fs` along it and, given the ground polyline and
+the material, Fellenius along it (the ends of the polyline that lie below the ground are extended
+to the ground along their end segments, or vertically like a tension crack if the end segment
+does not rise to the ground, for the slices).
+
+Bad input (an empty or NaN polyline, a polyline or circle that meets no joint of the scene: "misses
+the slope", a non-positive band) raises ValueError naming the problem.
 """
 import math
 from dataclasses import dataclass
 
-__all__ = ["ContactFS", "contact_fs", "point_polyline_distance", "table2", "le_slope", "circle_through",
-           "limit_equilibrium_summary", "fs_table"]
+__all__ = ["ContactFS", "contact_fs", "contact_fs_circle", "SlipSurface", "slipping_surface", "slip_surface_fs",
+           "point_polyline_distance", "table2", "le_slope", "circle_through", "limit_equilibrium_summary",
+           "fs_table", "check_polyline", "probe_slipping_surface"]
 
 
 def point_polyline_distance(p, poly):
@@ -58,13 +81,33 @@ class ContactFS:
         return (label, self.shear, self.normal, self.fs)
 
 
-def contact_fs(surface, tol=None, O=None):
+def check_polyline(surface, name="slip surface"):
+    """The polyline as float pairs: at least 2 finite points with strictly increasing x."""
+    if surface is None:
+        raise ValueError("%s: none given" % name)
+    try:
+        poly = [(float(x), float(y)) for x, y in surface]
+    except (TypeError, ValueError):
+        raise ValueError("%s must be a sequence of (x, y) pairs" % name) from None
+    if len(poly) < 2:
+        raise ValueError("%s needs at least 2 points, got %d%s" % (name, len(poly), " (empty list)" if not poly else ""))
+    if not all(math.isfinite(c) for p in poly for c in p):
+        raise ValueError("%s contains NaN or inf" % name)
+    if any(b[0] <= a[0] for a, b in zip(poly[:-1], poly[1:])):
+        raise ValueError("%s: x must be strictly increasing" % name)
+    return poly
+
+
+def contact_fs(surface, tol=None, O=None, allow_empty=False):
     """FS along the slip polyline *surface* ``[(x, y), ...]`` (strictly increasing x) from the
     current contact forces; see the module docstring. *tol* defaults to 1e-3 × the polyline's
-    extent (blocks move by the elastic settlement, mm, before the forces are read)."""
+    extent (blocks move by the elastic settlement, mm, before the forces are read). ValueError if
+    no joint lies on it (the surface misses the slope) unless *allow_empty*."""
     if O is None:
         from yade import O
-    poly = [(float(x), float(y)) for x, y in surface]
+    poly = check_polyline(surface)
+    if tol is not None and not (math.isfinite(tol) and tol > 0):
+        raise ValueError("contact_fs: tol must be a finite number > 0, got %r" % (tol,))
     if tol is None:
         size = max(poly[-1][0] - poly[0][0], max(p[1] for p in poly) - min(p[1] for p in poly))
         tol = 1e-3 * size
@@ -85,18 +128,279 @@ def contact_fs(surface, tol=None, O=None):
         upper_is_2 = s2 > 0
         t = (g.tangent[0], g.tangent[1])
         d = t if t[0] * direction > 0 else (-t[0], -t[1])
-        sgn = 1.0 if upper_is_2 else -1.0
-        f_on_upper = (sgn * ph.shearForce * t[0], sgn * ph.shearForce * t[1])
-        T += -(f_on_upper[0] * d[0] + f_on_upper[1] * d[1])
-        N += ph.normalForce
-        intact = list(ph.intactPoints)
-        w = list(g.weights)
-        R += sum(ph.cohesion * wk * g.length * g.thickness for wk, ok in zip(w, intact) if ok)
-        R += ph.normalForce * ph.tanPhi
+        t_, n_, r_ = _joint_terms(I, upper_is_2, d)
+        T += t_
+        N += n_
+        R += r_
         L += g.length
+        used.append((I.id1, I.id2))
+    if not used and not allow_empty:
+        raise ValueError("contact_fs: the slip surface %s misses the slope: no joint lies on it within tol = %g m "
+                         "with its blocks on opposite sides" % (_short(poly), tol))
+    fs = R / abs(T) if T != 0 else float("inf")
+    return ContactFS(fs, N / 1e3, T / 1e3, R / 1e3, len(used), L, used)
+
+
+def _short(poly, most=3):
+    return "[" + ", ".join("(%g, %g)" % p for p in poly[:most]) + (", ...]" if len(poly) > most else "]")
+
+
+def _check_circle(circle):
+    try:
+        xc, yc, R = (float(v) for v in circle)
+    except (TypeError, ValueError):
+        raise ValueError("circle must be (xc, yc, R), got %r" % (circle,)) from None
+    if not all(math.isfinite(v) for v in (xc, yc, R)):
+        raise ValueError("circle (xc, yc, R) contains NaN or inf")
+    if R <= 0:
+        raise ValueError("circle radius R must be > 0, got %g" % R)
+    return xc, yc, R
+
+
+def _joint_terms(I, upper_is_2, d):
+    """(T, N, R) of one joint: driving shear on the upper block along d, normal, strength."""
+    g, ph = I.geom, I.phys
+    t = (g.tangent[0], g.tangent[1])
+    sgn = 1.0 if upper_is_2 else -1.0
+    f_on_upper = (sgn * ph.shearForce * t[0], sgn * ph.shearForce * t[1])
+    T = -(f_on_upper[0] * d[0] + f_on_upper[1] * d[1])
+    w = list(g.weights)
+    R = sum(ph.cohesion * wk * g.length * g.thickness for wk, ok in zip(w, list(ph.intactPoints)) if ok)
+    R += ph.normalForce * ph.tanPhi
+    return T, ph.normalForce, R
+
+
+def contact_fs_circle(circle, band=None, O=None):
+    """FS along the circle ``(xc, yc, R)`` from the current contact forces (module docstring);
+    *band* (m) defaults to 2 % of R. ValueError if no joint lies within the band (the circle misses
+    the slope)."""
+    if O is None:
+        from yade import O
+    xc, yc, Rc = _check_circle(circle)
+    band = 0.02 * Rc if band is None else band
+    if not (isinstance(band, (int, float)) and math.isfinite(band) and band > 0):
+        raise ValueError("contact_fs_circle: band must be a finite number > 0, got %r" % (band,))
+    sel = []
+    for I in O.interactions:
+        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
+            continue
+        g = I.geom
+        mx, my = 0.5 * (g.p0[0] + g.p1[0]), 0.5 * (g.p0[1] + g.p1[1])
+        if abs(math.hypot(mx - xc, my - yc) - Rc) > band:
+            continue
+        c1, c2 = O.bodies[I.id1].state.pos, O.bodies[I.id2].state.pos
+        in1 = math.hypot(c1[0] - xc, c1[1] - yc) < Rc
+        in2 = math.hypot(c2[0] - xc, c2[1] - yc) < Rc
+        if in1 == in2:
+            continue
+        sel.append((I, in2, (mx, my)))
+    if not sel:
+        raise ValueError("contact_fs_circle: the circle (%g, %g, R = %g) misses the slope: no joint within the "
+                         "band %g m with its blocks on opposite sides" % (xc, yc, Rc, band))
+    # rotation sense of the sliding mass: moment of the weights of the free blocks inside
+    moment = 0.0
+    for b in O.bodies:
+        if b is None or b.state.blockedDOFs == "xyzXYZ":
+            continue
+        p = b.state.pos
+        if math.hypot(p[0] - xc, p[1] - yc) < Rc:
+            moment += b.state.mass * (p[0] - xc)
+    cw = moment >= 0
+    N = T = R = L = 0.0
+    used = []
+    for I, upper_is_2, (mx, my) in sel:
+        rx, ry = (mx - xc), (my - yc)
+        r = math.hypot(rx, ry)
+        d = (ry / r, -rx / r) if cw else (-ry / r, rx / r)  # z x r is CCW
+        t_, n_, r_ = _joint_terms(I, upper_is_2, d)
+        T += t_
+        N += n_
+        R += r_
+        L += I.geom.length
         used.append((I.id1, I.id2))
     fs = R / abs(T) if T != 0 else float("inf")
     return ContactFS(fs, N / 1e3, T / 1e3, R / 1e3, len(used), L, used)
+
+
+@dataclass
+class SlipSurface:
+    polyline: list  # [(x, y), ...], increasing x
+    joints: list  # (id1, id2)
+    length: float  # m, sum of the contact lengths
+
+    def __str__(self):
+        return "slipping surface: %d joints, %.2f m, polyline %s" % (
+            len(self.joints), self.length, " ".join("(%.2f, %.2f)" % p for p in self.polyline))
+
+
+def slipping_surface(O=None, tol=None, min_slipping=1, joints=None):
+    """The surface of slipping joints of the current state (module docstring); None if no joint
+    slips. *joints*: a set of (id1, id2) to use instead of the joints slipping now (e.g. those that
+    slipped at some time of a run, :func:`probe_slipping_surface`)."""
+    if O is None:
+        from yade import O
+    segs = []
+    for I in O.interactions:
+        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
+            continue
+        if (I.phys.nSlipping < min_slipping) if joints is None else ((I.id1, I.id2) not in joints):
+            continue
+        g = I.geom
+        segs.append(((g.p0[0], g.p0[1]), (g.p1[0], g.p1[1]), (I.id1, I.id2), g.length))
+    if not segs:
+        return None
+    L = sorted(s[3] for s in segs)
+    med = L[len(L) // 2]
+    segs = [sg for sg in segs if sg[3] > 0.01 * med]  # corner (point) contacts are no part of a surface
+    if not segs:
+        return None
+    if tol is None:  # half the median length of all joints of the scene
+        la = sorted(I.geom.length for I in O.interactions if I.isReal and type(I.phys).__name__ == "RbsmPhys"
+                    and I.geom.length > 0)
+        tol = 0.5 * la[len(la) // 2]
+    parent = list(range(len(segs)))
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    def sdist(a, b):
+        return min(point_polyline_distance(a[0], [b[0], b[1]]), point_polyline_distance(a[1], [b[0], b[1]]),
+                   point_polyline_distance(b[0], [a[0], a[1]]), point_polyline_distance(b[1], [a[0], a[1]]))
+    for i in range(len(segs)):
+        for j in range(i + 1, len(segs)):
+            if sdist(segs[i], segs[j]) <= tol:
+                parent[find(i)] = find(j)
+    groups = {}
+    for k in range(len(segs)):
+        groups.setdefault(find(k), []).append(k)
+    best = max(groups.values(), key=lambda g: sum(segs[k][3] for k in g))
+    # polyline: the end points, merged within tol, ordered by x (then y)
+    pts = []
+    for k in best:
+        for p in segs[k][:2]:
+            if not any(math.hypot(p[0] - q[0], p[1] - q[1]) <= tol for q in pts):
+                pts.append(p)
+    pts.sort()
+    # strictly increasing x: points within tol in x (a vertical run, e.g. a crack) are kept in the
+    # order of the path (up if the surface arrives from below) and spread by a tiny dx
+    clusters = []
+    for p in pts:
+        if clusters and p[0] - clusters[-1][0][0] <= tol:
+            clusters[-1].append(p)
+        else:
+            clusters.append([p])
+    poly = []
+    dx = 1e-6 * max(1.0, max(abs(c) for p in pts for c in p))
+    for cl in clusters:
+        ym = sum(p[1] for p in cl) / len(cl)
+        cl.sort(key=lambda p: p[1], reverse=bool(poly) and poly[-1][1] > ym)
+        x = max(cl[0][0], poly[-1][0] + dx) if poly else cl[0][0]
+        for p in cl:
+            poly.append((max(p[0], x), p[1]))
+            x = poly[-1][0] + dx
+    return SlipSurface(poly, [segs[k][2] for k in best], sum(segs[k][3] for k in best))
+
+
+def probe_slipping_surface(steps=500, damping=0.0, check=20, O=None, **kw):
+    """Run *steps* steps from the current state (NewtonIntegrator damping *damping*, PyRunners
+    off), collecting every *check* steps the joints that slip (a sliding joint sticks now and
+    then), find the surface of the joints that slipped (:func:`slipping_surface` with them,
+    keywords *kw*), then restore the state (O.saveTmp / O.loadTmp): the surface of a failing slope
+    read from its first motion, to evaluate the contact forces of the equilibrium state along it.
+    Returns a SlipSurface or None."""
+    if O is None:
+        from yade import O
+    mark = "rbsm_slip_probe"
+    O.saveTmp(mark)
+    try:
+        for e in O.engines:
+            if type(e).__name__ == "PyRunner":
+                e.dead = True
+            if type(e).__name__ == "NewtonIntegrator":
+                e.damping = damping
+        seen = set()
+        done = 0
+        while done < steps:
+            k = min(check, steps - done)
+            O.run(int(k), True)
+            done += k
+            seen.update((I.id1, I.id2) for I in O.interactions
+                        if I.isReal and type(I.phys).__name__ == "RbsmPhys" and I.phys.nSlipping > 0)
+        return slipping_surface(O=O, joints=seen, **kw)
+    finally:
+        O.loadTmp(mark)
+
+
+def _extend_to_ground(poly, ground):
+    """Extend the ends of *poly* that lie below the ground polyline along their end segments up to
+    the ground (a plane is continued as a plane), or vertically if the end segment does not rise
+    towards the ground within the slope's extent."""
+    from .slope import _interp_y
+    out = list(poly)
+    x0, xn = ground[0][0], ground[-1][0]
+    for end in (0, -1):
+        p = out[end]
+        q = out[1] if end == 0 else out[-2]
+        if p[1] >= _interp_y(ground, p[0]):
+            continue
+        dx, dy = p[0] - q[0], p[1] - q[1]
+        hit = None
+        if dx != 0:
+            def below(m):
+                return p[1] + m * dy < _interp_y(ground, p[0] + m * dx)
+            lo, hi = 0.0, 1.0
+            while below(hi) and x0 < p[0] + hi * dx < xn and hi < 1e6:
+                hi *= 2
+            if not below(hi):
+                for _ in range(60):
+                    m = 0.5 * (lo + hi)
+                    if below(m):
+                        lo = m
+                    else:
+                        hi = m
+                hit = (p[0] + hi * dx, p[1] + hi * dy)
+        if hit is None:
+            e = 1e-6 * max(1.0, abs(p[0]))
+            hit = (p[0] - e if end == 0 else p[0] + e, max(y for _, y in ground) + 1.0)
+        if end == 0:
+            out.insert(0, hit)
+        else:
+            out.append(hit)
+    return out
+
+
+def slip_surface_fs(surface=None, ground=None, material=None, g=9.81, n=50, O=None, tol=None, slope=None):
+    """FS along the surface of slipping joints: returns ``(SlipSurface, ContactFS, Fellenius
+    Result or str or None)``. *surface*: a SlipSurface (default: :func:`slipping_surface` now);
+    with *ground* (ground polyline) and *material* (RbsmMat), also Fellenius along it (ends below
+    the ground extended to it, module docstring), or along the limit_equilibrium.Slope *slope*
+    (its ground and layers: e.g. the strength of the joints rather than of the blocks). *tol*: as in :func:`contact_fs`, default 0.1 x
+    the median joint length. ValueError if no joint slips."""
+    if O is None:
+        from yade import O
+    ss = surface if surface is not None else slipping_surface(O=O)
+    if ss is None:
+        raise ValueError("slip_surface_fs: no joint slips: there is no slipping surface")
+    if len(ss.polyline) < 2:
+        raise ValueError("slip_surface_fs: the slipping surface is a single point")
+    if tol is None:  # the blocks have moved a little along the surface since it was found
+        la = sorted(I.geom.length for I in O.interactions if I.isReal and type(I.phys).__name__ == "RbsmPhys"
+                    and I.geom.length > 0)
+        tol = 0.1 * la[len(la) // 2]
+    fs = contact_fs(ss.polyline, O=O, tol=tol)
+    fel = None
+    if slope is None and ground is not None and material is not None:
+        slope = le_slope(ground, material, g=g)
+    if slope is not None:
+        from . import limit_equilibrium as le
+        try:
+            fel = le.fellenius_polyline(slope, _extend_to_ground(ss.polyline, [tuple(p) for p in slope.surface]), n)
+        except ValueError as e:
+            fel = str(e)
+    return ss, fs, fel
 
 
 def table2(rbsm, fellenius=None, title="Table 2 - factor of safety along the slip surface"):

@@ -746,8 +746,9 @@ def _seg_dist(p, a, b):
 
 def break_joints(polylines, tol=None):
     """Break (RbsmPhys.breakJoint) every joint whose contact segment lies on a segment of one of
-    the *polylines* (both ends within *tol*, default 1e-6 x the scene size). Returns the number
-    broken."""
+    the *polylines* (both ends within *tol*, default 1e-6 x the scene size; length > *tol*: corner
+    contacts at a point of the polyline stay) with its two blocks on opposite sides of it. Returns
+    the number broken."""
     from yade import O
     segs = [(a, b) for l in polylines for a, b in zip(l[:-1], l[1:])]
     if not segs:
@@ -760,7 +761,16 @@ def break_joints(polylines, tol=None):
         if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
             continue
         p0, p1 = (I.geom.p0[0], I.geom.p0[1]), (I.geom.p1[0], I.geom.p1[1])
-        if any(_seg_dist(p0, a, b) <= tol and _seg_dist(p1, a, b) <= tol for a, b in segs):
+        if math.hypot(p1[0] - p0[0], p1[1] - p0[1]) <= tol:
+            continue
+        c1, c2 = O.bodies[I.id1].state.pos, O.bodies[I.id2].state.pos
+
+        def opposite(a, b):
+            dx, dy = b[0] - a[0], b[1] - a[1]
+            s1 = dx * (c1[1] - a[1]) - dy * (c1[0] - a[0])
+            s2 = dx * (c2[1] - a[1]) - dy * (c2[0] - a[0])
+            return s1 * s2 < 0
+        if any(_seg_dist(p0, a, b) <= tol and _seg_dist(p1, a, b) <= tol and opposite(a, b) for a, b in segs):
             I.phys.breakJoint()
             n += 1
     return n
