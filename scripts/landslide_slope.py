@@ -6,6 +6,8 @@ Geometry (the seed's figure geometry is not available; chosen here, all in metre
   * ground: toe flat at y = 2 for x in [0, 6], face up to the crest y = 12 at x = 14 (10 m high,
     51.3 deg), crest flat to x = 24; base of the blocks y = 0; fixed foundation (1 m) and side walls;
   * bricks 2 m x 1 m with staggered vertical joints (cut at the kinks so every block is convex);
+    --pattern voronoi: random Voronoi blocks (CGAL, --spacing, --seed) cut along the joint plane and
+    the crack; --pattern columns: full-height columns (--column-width) cut along them;
   * a pre-existing joint plane from the toe (6, 2) rising at psi = 35 deg to the crack, and a
     tension crack behind the crest at x = 17 from the ground down to that plane (joints broken);
     the slip polyline used for the factor of safety is the plane + the crack.
@@ -23,6 +25,10 @@ Stages:
      Fellenius along the slip polyline; Fellenius and Bishop for the circle tangent to the toe flat
      at the toe and through the top of the crack; critical toe circle (grid search, Fellenius and
      Bishop);
+  4b. the surface of slipping joints found by the program: an undamped --probe-steps probe with the
+     real phi from the state after stage 2 (restored afterwards) collects the joints that slip; their
+     largest connected set is the surface (a polyline); contact-force FS (state after stage 2) and
+     Fellenius along it (its ends continued to the ground), printed like Table 2;
   5. optional (--strength-reduction): FS by strength reduction from the state of stage 2 (tan(phi)
      and c divided by F, damped stage; failure = a block displaced by more than --sr-dfail, or the
      unbalanced-force ratio not below --sr-tol within --sr-steps steps; bracket and bisect);
@@ -52,7 +58,14 @@ from yade_rbsm.strength_reduction import strength_reduction
 ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 ap.add_argument("--density-units", choices=["kgf", "si"], default="kgf")
 ap.add_argument("--out", default="out/landslide")
+ap.add_argument("--pattern", choices=["bricks", "voronoi", "columns"], default="bricks",
+                help="blocks: staggered bricks (default), random Voronoi blocks (CGAL) or columns")
 ap.add_argument("--brick", type=float, nargs=2, default=(2.0, 1.0), metavar=("W", "H"))
+ap.add_argument("--spacing", type=float, default=None, help="Voronoi block size [m] (default sqrt(W H) of --brick)")
+ap.add_argument("--seed", type=int, default=1, help="seed of the Voronoi sites")
+ap.add_argument("--column-width", type=float, default=None, help="column width [m] (default W/2 of --brick)")
+ap.add_argument("--probe-steps", type=int, default=300,
+                help="steps of the undamped probe that finds the surface of slipping joints (0: skip)")
 ap.add_argument("--height", type=float, default=10.0, help="slope height [m]")
 ap.add_argument("--tol", type=float, default=1e-3, help="unbalanced-force ratio of the gravity stage")
 ap.add_argument("--max-settle", type=int, default=20000, help="max steps of the gravity stage")
@@ -99,8 +112,21 @@ mat = wrapper.RbsmMat(young=200e6, poisson=0.2, density=rho245, frictionAngle=ph
                       tensileStrength=0.0, planeStrain=True, label="rock")
 O.materials.append(mat)
 
-sb = sl.brick_blocks(surface, 0.0, args.brick[0], args.brick[1], joints=[plane], crack=(xcrack, ycrack),
-                     foundation=1.0, wall=1.0)
+crack_line = [(xcrack, ycrack), (xcrack, surface[-1][1])]
+if args.pattern == "voronoi":
+    spacing = args.spacing or math.sqrt(args.brick[0] * args.brick[1]) * (scale if args.small else 1.0)
+    sb = sl.voronoi_slope_blocks(surface, 0.0, spacing=spacing, seed=args.seed, min_distance=0.5 * spacing,
+                                 joints=[plane], cracks=[crack_line], foundation=1.0, wall=1.0)
+    print("pattern: Voronoi blocks (CGAL), spacing %.2f m, seed %d, cut along the joint plane and the crack"
+          % (spacing, args.seed))
+elif args.pattern == "columns":
+    cw = args.column_width or 0.5 * args.brick[0]
+    sb = sl.column_blocks(surface, 0.0, cw, joints=[plane], cracks=[crack_line], foundation=1.0, wall=1.0)
+    print("pattern: columns %.2f m wide (full height), cut along the joint plane and the crack" % cw)
+else:
+    sb = sl.brick_blocks(surface, 0.0, args.brick[0], args.brick[1], joints=[plane], crack=(xcrack, ycrack),
+                         foundation=1.0, wall=1.0)
+    print("pattern: bricks %g m x %g m, staggered" % tuple(args.brick))
 sl.build_scene(sb, mat)
 print("slope: %d free blocks, %d fixed; area %.3f m2 (closed form %.3f, slivers dropped %.2e)"
       % (len(sb.free), len(sb.blocks) - len(sb.free), sum(b.area for b in sb.free), sb.slope_area, sb.dropped_area))
@@ -170,6 +196,26 @@ print("limit equilibrium on the same slope (gamma = %.2f kN/m3, c = 0, phi = 30 
       % (slope_le.layers[0].gamma, time.time() - t0))
 for k, v in lem.items():
     print("  %-28s %s" % (k + ":", v))
+
+# --- surface of slipping joints found by the program ------------------------------------------
+found = None
+if args.probe_steps > 0:
+    t0 = time.time()
+    ss = safety.probe_slipping_surface(steps=args.probe_steps, damping=0.0)
+    if ss is None:
+        print("surface of slipping joints: no joint slipped in a %d-step probe" % args.probe_steps)
+    else:
+        try:
+            found = safety.slip_surface_fs(ss, slope=slope_le)  # contact forces of the state after the gravity stage
+        except ValueError as e:
+            print("surface of slipping joints: %s" % e)
+        else:
+            print("%s (found in an undamped %d-step probe from the state after the gravity stage, state restored; "
+                  "%.1f s wall)" % (ss, args.probe_steps, time.time() - t0))
+            fel_found = found[2] if not isinstance(found[2], str) else None
+            print(safety.table2(found[1], fel_found, title="Table 2 (surface of slipping joints found by the program)"))
+            if isinstance(found[2], str):
+                print("  Fellenius along it failed: %s" % found[2])
 snapshots.snapshot(os.path.join(args.out, "landslide_0_before.png"), "after gravity stage, t = 0", O=O, slip=slip)
 
 # --- strength reduction (optional) -------------------------------------------------------------
@@ -228,6 +274,11 @@ def _note(v, extra=""):
 beta = math.atan2(surface[2][1] - surface[1][1], surface[2][0] - surface[1][0])
 rows = [("RBSM contact forces, slip polyline", fs.fs, "T = %.1f kN/m, N = %.1f kN/m, %d joints (Table 2)"
          % (fs.shear, fs.normal, fs.n_joints))]
+if found is not None:
+    rows.append(("RBSM contact forces, found surface", found[1].fs, "T = %.1f kN/m, N = %.1f kN/m, %d joints"
+                 % (found[1].shear, found[1].normal, found[1].n_joints)))
+    rows.append(("Fellenius, found surface", found[2] if isinstance(found[2], str) else found[2].fs,
+                 found[2] if isinstance(found[2], str) else "T = %.1f kN/m, N = %.1f kN/m" % (found[2].shear, found[2].normal)))
 if sr is not None:
     rows.append(("RBSM strength reduction", sr.fs, "bracket [%.3f stable, %.3f failed], %d trials"
                  % (sr.lo, sr.hi, len(sr.trials))))

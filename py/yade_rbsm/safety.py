@@ -26,7 +26,9 @@ i.e. ``Σ m (x - xc) > 0``, as in Fellenius' driving moment).
 :func:`slipping_surface` finds the surface of slipping joints: the real joints with at least
 ``min_slipping`` slipping integration points (``phys.nSlipping``) are linked when their contact
 segments share an end (within *tol*); the largest connected set (by length) is the surface,
-returned as a polyline (the end points of its joints ordered by increasing x) with the joints.
+returned as a polyline: the shortest path (by length) through its joints and the gaps between
+them from its end point of least x to its end point of greatest x (x made strictly increasing), with
+the joints along that path.
 Joints are linked when their contact segments come within *tol* of each other (default half the
 median length of the scene's joints: a sliding block's contact may cover only part of its edge); point contacts
 (length < 1 % of the median) are left out.
@@ -277,30 +279,51 @@ def slipping_surface(O=None, tol=None, min_slipping=1, joints=None):
     for k in range(len(segs)):
         groups.setdefault(find(k), []).append(k)
     best = max(groups.values(), key=lambda g: sum(segs[k][3] for k in g))
-    # polyline: the end points, merged within tol, ordered by x (then y)
-    pts = []
-    for k in best:
-        for p in segs[k][:2]:
-            if not any(math.hypot(p[0] - q[0], p[1] - q[1]) <= tol for q in pts):
-                pts.append(p)
-    pts.sort()
-    # strictly increasing x: points within tol in x (a vertical run, e.g. a crack) are kept in the
-    # order of the path (up if the surface arrives from below) and spread by a tiny dx
-    clusters = []
-    for p in pts:
-        if clusters and p[0] - clusters[-1][0][0] <= tol:
-            clusters[-1].append(p)
-        else:
-            clusters.append([p])
+    # the surface through the set: shortest path (Dijkstra, by length) over the joints and the gaps
+    # (<= tol) between their ends, from the end point of least x to the end point of greatest x
+    import heapq
+    nodes = [p for k in best for p in segs[k][:2]]
+    adj = {i: [] for i in range(len(nodes))}
+    for m, k in enumerate(best):
+        adj[2 * m].append((2 * m + 1, segs[k][3]))
+        adj[2 * m + 1].append((2 * m, segs[k][3]))
+    for a in range(len(nodes)):
+        for b in range(a + 1, len(nodes)):
+            if a // 2 != b // 2:
+                d = math.hypot(nodes[a][0] - nodes[b][0], nodes[a][1] - nodes[b][1])
+                if d <= tol:
+                    adj[a].append((b, d))
+                    adj[b].append((a, d))
+    src = min(range(len(nodes)), key=lambda i: (nodes[i][0], nodes[i][1]))
+    dst = max(range(len(nodes)), key=lambda i: (nodes[i][0], nodes[i][1]))
+    dist, prev, heap = {src: 0.0}, {}, [(0.0, src)]
+    while heap:
+        d, a = heapq.heappop(heap)
+        if a == dst or d > dist.get(a, float("inf")):
+            if a == dst:
+                break
+            continue
+        for b, w in adj[a]:
+            if d + w < dist.get(b, float("inf")):
+                dist[b], prev[b] = d + w, a
+                heapq.heappush(heap, (d + w, b))
+    path = [dst]
+    while path[-1] != src and path[-1] in prev:
+        path.append(prev[path[-1]])
+    path.reverse()
+    on_path = {best[i // 2] for i in path}
+    best = [k for k in best if k in on_path]
+    dx = 1e-6 * max(1.0, max(abs(c) for i in path for c in nodes[i]))
     poly = []
-    dx = 1e-6 * max(1.0, max(abs(c) for p in pts for c in p))
-    for cl in clusters:
-        ym = sum(p[1] for p in cl) / len(cl)
-        cl.sort(key=lambda p: p[1], reverse=bool(poly) and poly[-1][1] > ym)
-        x = max(cl[0][0], poly[-1][0] + dx) if poly else cl[0][0]
-        for p in cl:
-            poly.append((max(p[0], x), p[1]))
+    for i in path:  # strictly increasing x (a vertical run is spread by a tiny dx; back steps dropped)
+        x, y = nodes[i]
+        if poly and math.hypot(x - poly[-1][0], y - poly[-1][1]) <= tol * 1e-3:
+            continue
+        if poly and x <= poly[-1][0]:
+            if poly[-1][0] - x > tol:
+                continue
             x = poly[-1][0] + dx
+        poly.append((x, y))
     return SlipSurface(poly, [segs[k][2] for k in best], sum(segs[k][3] for k in best))
 
 

@@ -469,8 +469,6 @@ def check_polygon(poly, name="slope polygon"):
     pts = _pts(name, poly, 3)
     if len(set(pts)) != len(pts):
         raise ValueError("%s: repeated vertex" % name)
-    if polygon_area(pts) == 0:
-        raise ValueError("%s has zero area" % name)
     n = len(pts)
     for i in range(n):
         for j in range(i + 1, n):
@@ -479,6 +477,8 @@ def check_polygon(poly, name="slope polygon"):
             if _seg_intersect(pts[i], pts[(i + 1) % n], pts[j], pts[(j + 1) % n]):
                 raise ValueError("%s is not simple: edge %d (%g, %g)-(%g, %g) meets edge %d" % (
                     name, i, pts[i][0], pts[i][1], pts[(i + 1) % n][0], pts[(i + 1) % n][1], j))
+    if polygon_area(pts) == 0:
+        raise ValueError("%s has zero area" % name)
     return pts
 
 

@@ -94,3 +94,27 @@ def test_vtk_series(run):
                 lo, hi = pd.GetCellData().GetArray("state").GetRange()
                 assert 0 <= lo <= hi <= 2
                 assert pd.GetCellData().GetArray("normalForce").GetRange()[1] > 0
+
+
+def test_voronoi_pattern(tmp_path):
+    """--pattern voronoi on the tiny slope: CGAL blocks tile the slope, the crack joints are broken,
+    Table 2 along the given polyline and along the surface of slipping joints found by the program
+    (Fellenius along both), PNG and VTK written."""
+    out = tmp_path / "out"
+    p = run_yade(os.path.join(SRC, "scripts", "landslide_slope.py"), "--pattern", "voronoi", "--small", "--time", "0.03",
+                 "--vtk-every", "0.02", "--no-search", "--probe-steps", "100", "--out", str(out), cwd=str(tmp_path))
+    s = p.stdout
+    assert p.returncode == 0, s[-3000:] + p.stderr[-3000:]
+    assert "pattern: Voronoi blocks (CGAL)" in s
+    a, a0 = map(float, re.search(r"area ([0-9.]+) m2 \(closed form ([0-9.]+)", s).groups())
+    assert a == pytest.approx(a0, rel=1e-9)
+    assert int(re.search(r"joints: \d+ bonded, (\d+) on the crack broken", s).group(1)) >= 1
+    assert "Table 2 (surface of slipping joints found by the program)" in s
+    rbsm, _ = _fs_row(s, "RBSM contact forces, slip polyline")
+    assert 0.3 < rbsm < 1.2
+    _fs_row(s, "RBSM contact forces, found surface")
+    _fs_row(s, "Fellenius, found surface")
+    fel, _ = _fs_row(s, "Fellenius, slip polyline")
+    assert fel == pytest.approx(math.tan(math.radians(30)) / math.tan(math.radians(35)), rel=5e-3)
+    assert (out / "landslide_0_before.png").stat().st_size > 1000
+    assert (out / "vtk" / "landslide_blocks.pvd").is_file()
