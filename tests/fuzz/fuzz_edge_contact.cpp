@@ -36,10 +36,11 @@
 //     edge lies inside I. Deep pairs (overlap > 5 % of the smaller block, not a state a stable RBSM run
 //     reaches) are counted separately and reported, not failed. Check 5 fails at corner-to-corner contacts
 //     (bug 2 of the issue 6 report). Clipping the incident edge to the reference block's other edges
-//     took the violations from 129 depth / 38 length to 35 / 5 in 1e5 pairs (seed 1); what is left are
-//     corners of the reference block poking into the incident one away from the incident edge, where
-//     that clip would leave nothing and the kernel keeps the projection. Those violations are expected
-//     (a strict xfail, see the end of main) until the kernel chooses the incident edge by overlap.
+//     took the violations from 129 depth / 38 length to 35 / 5 in 1e5 pairs (seed 1), and taking the other
+//     block's best edge as reference where that clip leaves nothing (a corner of the reference block
+//     poking into the other one) to 18 / 0. What is left are pairs where neither reference leaves a
+//     clipped segment and the kernel keeps the projection. Those violations are expected (a strict
+//     xfail, see the end of main) until the kernel handles that case too.
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 

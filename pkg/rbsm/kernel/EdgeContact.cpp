@@ -43,6 +43,83 @@ namespace {
 		if (b > 0) lo = std::max(lo, root);
 		else hi = std::min(hi, root);
 	}
+
+	// The contact segment on edge refEdge of polygon refBody (1: A, 2: B): the facing edge of the
+	// other polygon (outward normal most anti-parallel to the reference normal) clipped to
+	// (i) the side planes of the reference edge, (ii) the part within maxSep of its line and, if
+	// strict, (iii) within maxSep of the reference polygon's other edges: where two blocks meet
+	// corner to corner, the facing edge passes behind the reference line but leaves the reference
+	// block through a neighbouring edge, and that part is no overlap. Fills c (except separation)
+	// and returns true if something is left.
+	bool clipOnReference(
+	        const std::vector<Vec2>& A,
+	        const std::vector<Vec2>& B,
+	        const std::vector<Vec2>& normalsA,
+	        const std::vector<Vec2>& normalsB,
+	        int                      refBody,
+	        int                      refEdge,
+	        Real                     maxSep,
+	        bool                     strict,
+	        EdgeContact&             c)
+	{
+		const std::vector<Vec2>& R   = (refBody == 1) ? A : B;
+		const std::vector<Vec2>& I   = (refBody == 1) ? B : A;
+		const std::vector<Vec2>& nR  = (refBody == 1) ? normalsA : normalsB;
+		const std::vector<Vec2>& nIn = (refBody == 1) ? normalsB : normalsA;
+		const int                nI  = int(I.size());
+
+		// reference edge frame
+		const Vec2 r0 = R[refEdge], r1 = R[(refEdge + 1) % R.size()];
+		const Real Lr   = (r1 - r0).norm();
+		const Vec2 tRef = (r1 - r0) / Lr; // along the reference edge (CCW direction)
+		const Vec2 nRef(tRef.y(), -tRef.x()); // outward normal of the reference polygon
+
+		// incident edge
+		int  inc    = 0;
+		Real minDot = std::numeric_limits<Real>::infinity();
+		for (int i = 0; i < nI; ++i) {
+			const Real d = nIn[i].dot(nRef);
+			if (d < minDot) minDot = d, inc = i;
+		}
+		const Vec2 q0 = I[inc], q1 = I[(inc + 1) % nI];
+
+		// Incident point q(lambda) = q0 + lambda (q1 - q0), lambda in [0,1]. In the reference frame:
+		//   coordinate along the edge  x(lambda) = tRef.(q - r0)   (seed eq. (9))
+		//   overlap                    d(lambda) = -nRef.(q - r0)  (seed eq. (8), penetration > 0)
+		const Real x0 = tRef.dot(q0 - r0), x1 = tRef.dot(q1 - r0);
+		const Real g0 = -nRef.dot(q0 - r0), g1 = -nRef.dot(q1 - r0);
+		Real       lo = 0, hi = 1;
+		clipLinear(x0, x1 - x0, lo, hi);          // (i) x >= 0
+		clipLinear(Lr - x0, -(x1 - x0), lo, hi);  //     x <= Lr
+		clipLinear(g0 + maxSep, g1 - g0, lo, hi); // (ii) d >= -maxSep
+		if (strict)
+			for (int j = 0; j < int(R.size()); ++j) { // (iii) nR[j].(q - R[j]) <= maxSep
+				if (j == refEdge) continue;
+				const Real a0 = nR[j].dot(q0 - R[j]), a1 = nR[j].dot(q1 - R[j]);
+				clipLinear(maxSep - a0, -(a1 - a0), lo, hi);
+			}
+		if (!(lo <= hi)) return false;
+
+		auto xAt = [&](Real l) { return std::clamp(x0 + l * (x1 - x0), Real(0), Lr); };
+		auto dAt = [&](Real l) { return g0 + l * (g1 - g0); };
+		Vec2 pa = r0 + xAt(lo) * tRef, pb = r0 + xAt(hi) * tRef;
+		Real da = dAt(lo), db = dAt(hi);
+
+		// body-1 -> body-2 convention
+		c.normal  = (refBody == 1) ? nRef : Vec2(-nRef);
+		c.tangent = Vec2(-c.normal.y(), c.normal.x());
+		if ((pb - pa).dot(c.tangent) < 0) std::swap(pa, pb), std::swap(da, db);
+		c.p0       = pa;
+		c.p1       = pb;
+		c.d0       = da;
+		c.d1       = db;
+		c.length   = (pb - pa).norm();
+		c.refBody  = refBody;
+		c.refEdge  = refEdge;
+		c.incEdge  = inc;
+		c.touching = true;
+		return true;
+	}
 } // namespace
 
 EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, Real maxSeparation, const ContactHint* hint, Real hysteresis, Real minSizeGiven)
@@ -117,70 +194,23 @@ EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, 
 	const Real maxSep = std::max(maxSeparation, Real(0)) + slop;
 	if (!(sep <= maxSep)) return c; // also rejects NaN
 
-	const std::vector<Vec2>& R = (refBody == 1) ? A : B; // reference polygon
-	const std::vector<Vec2>& I = (refBody == 1) ? B : A; // incident polygon
-	const std::vector<Vec2>& nIn = (refBody == 1) ? normalsB : normalsA;
-	const int                nI = int(I.size());
-
-	// --- reference edge frame ---------------------------------------------------------------
-	const Vec2 r0 = R[refEdge], r1 = R[(refEdge + 1) % R.size()];
-	const Real Lr   = (r1 - r0).norm();
-	const Vec2 tRef = (r1 - r0) / Lr;           // along the reference edge (CCW direction)
-	const Vec2 nRef(tRef.y(), -tRef.x());       // outward normal of the reference polygon
-
-	// --- incident edge: outward normal most anti-parallel to nRef ------------------------------
-	int  inc = 0;
-	Real minDot = std::numeric_limits<Real>::infinity();
-	for (int i = 0; i < nI; ++i) {
-		const Real d = nIn[i].dot(nRef);
-		if (d < minDot) minDot = d, inc = i;
+	// Clip on the chosen reference edge; where the overlap is a corner of the reference block
+	// poking into the other one away from its facing edge, (iii) below leaves nothing, and the
+	// best edge of the other block, which that corner then penetrates, is the reference instead.
+	if (clipOnReference(A, B, normalsA, normalsB, refBody, refEdge, maxSep, true, c)) {
+		c.separation = sep;
+		return c;
 	}
-	const Vec2 q0 = I[inc], q1 = I[(inc + 1) % nI];
-	c.incEdge     = inc;
-
-	// Incident point q(lambda) = q0 + lambda (q1 - q0), lambda in [0,1]. In the reference frame:
-	//   coordinate along the edge  x(lambda) = tRef.(q - r0)   (seed eq. (9))
-	//   overlap                    d(lambda) = -nRef.(q - r0)  (seed eq. (8), penetration > 0)
-	const Real x0 = tRef.dot(q0 - r0), x1 = tRef.dot(q1 - r0);
-	const Real g0 = -nRef.dot(q0 - r0), g1 = -nRef.dot(q1 - r0);
-	Real       lo = 0, hi = 1;
-	clipLinear(x0, x1 - x0, lo, hi);                              // x >= 0
-	clipLinear(Lr - x0, -(x1 - x0), lo, hi);                      // x <= Lr
-	clipLinear(g0 + maxSep, g1 - g0, lo, hi);                     // d >= -maxSeparation
-	// ... and (iii) the reference polygon's other edges: where two blocks meet corner to corner,
-	// the incident edge passes behind the reference line but leaves the reference block through a
-	// neighbouring edge; the part outside it is no overlap and must not count as penetration.
-	// If that leaves nothing (the overlap is a corner of the reference block poking into the
-	// incident one away from the incident edge), the clip of (i)-(ii) is kept as it was.
-	if (!(lo <= hi)) return c;
-	{
-		const int   nR  = int(R.size());
-		const auto& nRp = (refBody == 1) ? normalsA : normalsB;
-		Real        lo3 = lo, hi3 = hi;
-		for (int j = 0; j < nR; ++j) {
-			if (j == refEdge) continue;
-			// signed distance in front of edge j: nRp[j].(q(lambda) - R[j]) <= maxSep
-			const Real a0 = nRp[j].dot(q0 - R[j]), a1 = nRp[j].dot(q1 - R[j]);
-			clipLinear(maxSep - a0, -(a1 - a0), lo3, hi3);
-		}
-		if (lo3 <= hi3) lo = lo3, hi = hi3;
+	const int         other     = 3 - refBody;
+	const auto&       otherSeps = other == 1 ? sepsA : sepsB;
+	const int         alt       = int(std::max_element(otherSeps.begin(), otherSeps.end()) - otherSeps.begin());
+	if (otherSeps[alt] <= maxSep && clipOnReference(A, B, normalsA, normalsB, other, alt, maxSep, true, c)) {
+		c.separation = otherSeps[alt];
+		return c;
 	}
-
-	auto xAt = [&](Real l) { return std::clamp(x0 + l * (x1 - x0), Real(0), Lr); };
-	auto dAt = [&](Real l) { return g0 + l * (g1 - g0); };
-	Vec2 pa = r0 + xAt(lo) * tRef, pb = r0 + xAt(hi) * tRef;
-	Real da = dAt(lo), db = dAt(hi);
-
-	// --- body-1 -> body-2 convention ---------------------------------------------------------
-	c.normal  = (refBody == 1) ? nRef : Vec2(-nRef);
-	c.tangent = Vec2(-c.normal.y(), c.normal.x());
-	if ((pb - pa).dot(c.tangent) < 0) std::swap(pa, pb), std::swap(da, db);
-	c.p0       = pa;
-	c.p1       = pb;
-	c.d0       = da;
-	c.d1       = db;
-	c.length   = (pb - pa).norm();
-	c.touching = true;
+	// neither: the projection on the chosen edge (clips (i) and (ii) only)
+	clipOnReference(A, B, normalsA, normalsB, refBody, refEdge, maxSep, false, c);
+	c.separation = sep;
 	return c;
 }
 
