@@ -87,7 +87,9 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	const Polygon2D& B = static_cast<const Polygon2D&>(*s2);
 	if (A.vertices.empty() || B.vertices.empty()) return false; // reported by Bo1_Polygon2D_Aabb
 
-	thread_local std::vector<rbsm::Vec2> va, vb;
+	thread_local std::pair<std::vector<rbsm::Vec2>, std::vector<rbsm::Vec2>> world; // per thread, one lookup
+	auto& va = world.first;
+	auto& vb = world.second;
 	worldVertices(A, state1, va);
 	worldVertices(B, state2, vb);
 

@@ -128,13 +128,22 @@ EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, 
 	const int   nA = int(A.size()), nB = int(B.size());
 	if (nA < 3 || nB < 3) return c;
 
-	thread_local std::vector<Vec2> normalsA, normalsB;
+	// Scratch arrays, one set per thread (the functor runs in parallel) and fetched once per call:
+	// each thread_local access in a shared library costs a call of __tls_get_addr.
+	struct Scratch {
+		std::vector<Vec2> normalsA, normalsB;
+		std::vector<Real> sepsA, sepsB;
+	};
+	thread_local Scratch scratch;
+	auto& normalsA = scratch.normalsA;
+	auto& normalsB = scratch.normalsB;
+	auto& sepsA    = scratch.sepsA;
+	auto& sepsB    = scratch.sepsB;
 	edgeNormals(A, normalsA);
 	edgeNormals(B, normalsB);
 
 	// --- separating-axis search -----------------------------------------------------------
 	// The separation of every edge of A against B and of B against A, kept for the tie-break.
-	thread_local std::vector<Real> sepsA, sepsB;
 	sepsA.resize(nA);
 	sepsB.resize(nB);
 	int  bestBody = 1, bestEdge = 0;
