@@ -16,7 +16,7 @@ Real RbsmTimeStepper::estimate()
 	std::vector<rbsm::DynBody> dyn;
 	std::vector<int>           index(bodies.size(), -1); // body id -> index in dyn
 	std::vector<rbsm::DynContact> contacts;
-	Real                          beta = 0; // largest damping coefficient / spring stiffness of a joint [s]
+	std::vector<Real>             dashpot, spring; // per block: Σ c·A [N·s/m] and Σ min(kn, ks)·A [N/m] of its joints
 	for (const auto& I : *scene->interactions) {
 		if (!I->isReal()) continue;
 		const auto* g = dynamic_cast<const RbsmGeom*>(I->geom.get());
@@ -37,8 +37,15 @@ Real RbsmTimeStepper::estimate()
 			}
 			ends[side] = index[id];
 		}
-		// viscous joint damping: its coefficient per stiffness, in both directions (see below)
-		if (p->dampingCoefficient > 0) beta = std::max(beta, p->dampingCoefficient / std::min(p->kn, p->ks));
+		// viscous joint damping: dashpot and (softer) spring of the joint, summed per block (see below)
+		if (p->dampingCoefficient > 0) {
+			const Real area = g->length * g->thickness;
+			for (int e : ends) {
+				if (int(dashpot.size()) <= e) dashpot.resize(e + 1, 0), spring.resize(e + 1, 0);
+				dashpot[e] += p->dampingCoefficient * area;
+				spring[e] += std::min(p->kn, p->ks) * area;
+			}
+		}
 		rbsm::DynContact c;
 		c.body1   = ends[0];
 		c.body2   = ends[1];
@@ -52,18 +59,23 @@ Real RbsmTimeStepper::estimate()
 		}
 		contacts.push_back(std::move(c));
 	}
-	const Real undamped = rbsm::criticalTimeStepGershgorin(dyn, contacts);
+	std::vector<Real> omega2; // Gershgorin bound of each block's rows
+	const Real        undamped = rbsm::criticalTimeStepGershgorin(dyn, contacts, &omega2);
 	// Joint dashpots (Law2's dampingRatio) lower the limit of the central-difference scheme, whose
 	// velocity is half a step behind: dt ≤ (2/ω)(√(1+ξ²) − ξ) for a mode of frequency ω and damping
-	// ratio ξ. The joints' damping matrix is at most β·K (β = c/k of the most damped joint, c/ks
-	// for the shear dashpot, which uses the normal coefficient on the softer spring), so
-	// ξ ≤ β·ω/2 for every mode; with ω̂ = 2/undamped ≥ ω_max and the limit decreasing in ω, the
-	// step below stays on the safe side.
-	if (beta > 0 && std::isfinite(undamped)) {
-		const Real omega = 2 / undamped, xi = beta * omega / 2;
-		criticalDt       = undamped * (std::sqrt(1 + xi * xi) - xi);
-	} else
-		criticalDt = undamped;
+	// ratio ξ. Every eigenvalue lies below the Gershgorin bound ω̂_b² of some block b; for that block
+	// the ratio is taken as ξ_b = β_b ω̂_b / 2, β_b = Σ c A / Σ k A over its joints (dashpot over the
+	// softer spring), and the step is the smallest (2/ω̂_b)(√(1+ξ_b²) − ξ_b). This is an estimate,
+	// not a bound. The bound through the whole damping matrix (C ≤ β K, β = max c/k of a single
+	// joint, with the system's ω̂) is dominated by short corner joints, whose dashpots are stiff
+	// per area but act on almost no area and belong to soft modes, and shrank the step of a brick
+	// wall 30-fold (docs/benchmarks.md). tests/robustness/test_timestep.py checks ξ = 0.1, 0.3, 1.0.
+	criticalDt = undamped;
+	for (size_t b = 0; b < dashpot.size() && b < omega2.size(); b++) {
+		if (!(spring[b] > 0 && dashpot[b] > 0 && omega2[b] > 0)) continue;
+		const Real w = std::sqrt(omega2[b]), xi = dashpot[b] / spring[b] * w / 2;
+		criticalDt   = std::min(criticalDt, 2 / w * (std::sqrt(1 + xi * xi) - xi));
+	}
 	return criticalDt;
 }
 

@@ -47,7 +47,7 @@ namespace {
 	}
 } // namespace
 
-Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts)
+Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts, std::vector<Real>* perBody)
 {
 	check(bodies, contacts);
 	const size_t                           n = bodies.size();
@@ -84,6 +84,11 @@ Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::v
 	Real lmax = 0;
 	for (size_t b = 0; b < n; ++b)
 		if (!bodies[b].fixed) lmax = std::max(lmax, bound[b]);
+	if (perBody) {
+		perBody->assign(n, 0);
+		for (size_t b = 0; b < n; ++b)
+			if (!bodies[b].fixed) (*perBody)[b] = bound[b];
+	}
 	return lmax > 0 ? 2 / std::sqrt(lmax) : std::numeric_limits<Real>::infinity();
 }
 

@@ -41,7 +41,10 @@ struct DynContact {
 /// for a single block on fixed supports. K is assembled exactly per body pair (all contacts
 /// between the same pair summed first). Fixed bodies' DOFs are removed. Cost O(#integration
 /// points + #body pairs). Returns +inf if nothing is stiff. Throws std::invalid_argument on bad input.
-Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts);
+///
+/// perBody (optional): the bound of each body's rows, lambda_max(S_bb) + sum ||S_bc|| [rad^2/s^2]
+/// (0 for fixed bodies): every eigenvalue lies below one of them (the highest is the result's).
+Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts, std::vector<Real>* perBody = nullptr);
 
 /// Exact dt_crit = 2 / sqrt(lambda_max(M^-1 K)) from a dense symmetric eigen-solve; O(N^3) in the
 /// number of free bodies, meant for tests and small systems (e.g. the two-block closed form).
