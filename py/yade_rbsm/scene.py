@@ -4,7 +4,8 @@ from yade import wrapper
 __all__ = ["engines", "critical_time_step"]
 
 
-def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, set_dt=True, interval=100, enlarge=0.0):
+def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, set_dt=True, interval=100, enlarge=0.0,
+            verlet_dist=None):
     """YADE's simulation loop for RBSM blocks, to assign to O.engines (and edit if needed)::
 
         ForceResetter
@@ -18,11 +19,19 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     *damping* is NewtonIntegrator's non-viscous (Cundall) damping, for quasi-static stages;
     *contact_damping* the viscous damping ratio of the joints; *set_dt*: the time stepper sets O.dt
     to safety × critical step (True) or refuses a larger O.dt (False).
+    *verlet_dist*: the collider's verletDist [m]; by default 1 % of the smallest block already in
+    O.bodies (YADE's automatic value is for spheres and becomes 0 without them, which re-sorts the
+    bounds at every step: 9 % of the step of a brick wall, docs/benchmarks.md).
     Labels: collider, ig2, ip2, law, timeStepper, newton.
     """
+    collider = wrapper.InsertionSortCollider([wrapper.Bo1_Polygon2D_Aabb(enlarge=enlarge)], label="collider")
+    if verlet_dist is None:
+        verlet_dist = 0.01 * _smallest_block()
+    if verlet_dist > 0:
+        collider.verletDist = verlet_dist
     return [
         wrapper.ForceResetter(),
-        wrapper.InsertionSortCollider([wrapper.Bo1_Polygon2D_Aabb(enlarge=enlarge)], label="collider"),
+        collider,
         wrapper.InteractionLoop(
             [wrapper.Ig2_Polygon2D_Polygon2D_RbsmGeom(nIP=nIP, label="ig2")],
             [wrapper.Ip2_RbsmMat_RbsmMat_RbsmPhys(label="ip2")],
@@ -31,6 +40,14 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
         wrapper.RbsmTimeStepper(safetyFactor=safety, setDt=set_dt, interval=interval, label="timeStepper"),
         wrapper.NewtonIntegrator(gravity=gravity, damping=damping, label="newton"),
     ]
+
+
+def _smallest_block():
+    """Smallest circumradius of the Polygon2D blocks in O.bodies [m] (0 if there are none)."""
+    from yade import O
+
+    sizes = [b.shape.circumradius for b in O.bodies if isinstance(b.shape, wrapper.Polygon2D) and b.shape.circumradius > 0]
+    return min(sizes) if sizes else 0.0
 
 
 def critical_time_step():
