@@ -112,25 +112,8 @@ def _clip(poly, line, keep_below, eps):
             out.append(p)
         if (sp > eps and sq < -eps) or (sp < -eps and sq > eps):
             out.append(line.cross(p, q))
-    # snap points lying on the line onto it? no: keep, then drop duplicates
-    res = []
-    for p in out:
-        if not res or (abs(p[0] - res[-1][0]) > eps or abs(p[1] - res[-1][1]) > eps):
-            res.append(p)
-    while len(res) > 1 and abs(res[0][0] - res[-1][0]) <= eps and abs(res[0][1] - res[-1][1]) <= eps:
-        res.pop()
-    # drop collinear vertices
-    changed = True
-    while changed and len(res) >= 3:
-        changed = False
-        for i in range(len(res)):
-            a, b, c = res[i - 1], res[i], res[(i + 1) % len(res)]
-            cr = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0])
-            if abs(cr) <= eps * eps * 10:
-                del res[i]
-                changed = True
-                break
-    return res if len(res) >= 3 else []
+    # repeated and collinear vertices dropped as for every other cut
+    return _clean(out, eps)
 
 
 @dataclass
@@ -547,6 +530,8 @@ def _assign_layers(blocks, layers):
 # cutting convex blocks along any polyline (joints, cracks, layer boundaries)
 # ---------------------------------------------------------------------------------------------
 def _clean(poly, eps):
+    """Drops repeated vertices (closer than eps) and collinear ones (turn below eps per unit length);
+    [] if fewer than 3 remain."""
     res = []
     for p in poly:
         if not res or (abs(p[0] - res[-1][0]) > eps or abs(p[1] - res[-1][1]) > eps):
