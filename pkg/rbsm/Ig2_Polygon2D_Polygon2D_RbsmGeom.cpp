@@ -25,16 +25,42 @@ void Ig2_Polygon2D_Polygon2D_RbsmGeom::postLoad(Ig2_Polygon2D_Polygon2D_RbsmGeom
 }
 
 namespace {
-	// World vertices into a reusable buffer (one per thread: InteractionLoop runs functors in parallel).
-	void worldVertices(const Polygon2D& shape, const State& state, std::vector<rbsm::Vec2>& out)
+	// Vertices and outward edge normals of a block placed at pos with rotation (c, s) in the frame the
+	// contact is computed in: n vertices then n normals, in the caller's stack buffer (or the heap
+	// for blocks of more than kStackVertices vertices). The normals are the body-frame ones of
+	// Polygon2D rotated with the block: no square root.
+	constexpr int kStackVertices = 16;
+	rbsm::PolygonView placedPolygon(const Polygon2D& shape, const Vector2r& pos, Real c, Real s, rbsm::Vec2* stack, std::vector<rbsm::Vec2>& heap)
 	{
-		Real c, s;
-		planarCosSin(state.ori, c, s);
-		out.resize(shape.vertices.size());
-		for (size_t i = 0; i < shape.vertices.size(); i++) {
-			const Vector2r& v = shape.vertices[i];
-			out[i]            = rbsm::Vec2(state.pos.x() + c * v.x() - s * v.y(), state.pos.y() + s * v.x() + c * v.y());
+		const int   n   = int(shape.vertices.size());
+		rbsm::Vec2* out = stack;
+		if (n > kStackVertices) {
+			heap.resize(2 * size_t(n));
+			out = heap.data();
 		}
+		for (int i = 0; i < n; i++) {
+			const Vector2r& v = shape.vertices[i];
+			out[i]            = rbsm::Vec2(pos.x() + c * v.x() - s * v.y(), pos.y() + s * v.x() + c * v.y());
+		}
+		if (shape.edgeNormals.size() == size_t(n)) {
+			for (int i = 0; i < n; i++) {
+				const Vector2r& e = shape.edgeNormals[i];
+				out[n + i]        = rbsm::Vec2(c * e.x() - s * e.y(), s * e.x() + c * e.y());
+			}
+		} else { // a shape whose derived data were not made (built in C++ without postLoad)
+			for (int i = 0; i < n; i++) {
+				const rbsm::Vec2 e = out[(i + 1) % n] - out[i];
+				out[n + i]         = rbsm::Vec2(e.y(), -e.x()).normalized();
+			}
+		}
+		return rbsm::PolygonView { out, out + n, n };
+	}
+
+	// A block in its own frame: its vertices and normals as they are (no copy).
+	rbsm::PolygonView ownFramePolygon(const Polygon2D& shape, rbsm::Vec2* stack, std::vector<rbsm::Vec2>& heap)
+	{
+		if (shape.edgeNormals.size() != shape.vertices.size()) return placedPolygon(shape, Vector2r::Zero(), 1, 0, stack, heap);
+		return rbsm::PolygonView { shape.vertices.data(), shape.edgeNormals.data(), int(shape.vertices.size()) };
 	}
 
 	bool isFixed(const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL; }
@@ -87,14 +113,23 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	const Polygon2D& B = static_cast<const Polygon2D&>(*s2);
 	if (A.vertices.empty() || B.vertices.empty()) return false; // reported by Bo1_Polygon2D_Aabb
 
-	thread_local std::pair<std::vector<rbsm::Vec2>, std::vector<rbsm::Vec2>> world; // per thread, one lookup
-	auto& va = world.first;
-	auto& vb = world.second;
-	worldVertices(A, state1, va);
-	worldVertices(B, state2, vb);
+	// The contact is computed in block 1's frame: its vertices and normals are used as stored, only
+	// block 2 is placed (rotation by θ2 − θ1, translation by R(−θ1)(x2 − x1)), and the result is
+	// turned back to the world frame. Half the transforms, and coordinates of the block's size
+	// (less round-off far from the origin).
+	Real cos1, sin1, cos2, sin2;
+	planarCosSin(state1.ori, cos1, sin1);
+	planarCosSin(state2.ori, cos2, sin2);
+	const Vector2r d12 = state2.pos.head<2>() - state1.pos.head<2>();
+	const Vector2r rel(cos1 * d12.x() + sin1 * d12.y(), -sin1 * d12.x() + cos1 * d12.y()); // R(−θ1)(x2 − x1)
+	const Real     relCos = cos1 * cos2 + sin1 * sin2, relSin = cos1 * sin2 - sin1 * cos2;  // θ2 − θ1
+	rbsm::Vec2              stackA[2 * kStackVertices], stackB[2 * kStackVertices];
+	std::vector<rbsm::Vec2> heapA, heapB;
+	const rbsm::PolygonView va = ownFramePolygon(A, stackA, heapA);
+	const rbsm::PolygonView vb = placedPolygon(B, rel, relCos, relSin, stackB, heapB);
 
-	const bool       existing = I->geom && !force;
-	RbsmGeom*        g        = existing ? static_cast<RbsmGeom*>(I->geom.get()) : nullptr;
+	const bool        existing = I->geom && !force;
+	RbsmGeom*         g        = existing ? static_cast<RbsmGeom*>(I->geom.get()) : nullptr;
 	rbsm::ContactHint hint;
 	if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
 	// New contacts need touch or closeness. An existing joint is followed while it opens as far
@@ -105,10 +140,14 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		// class index instead of dynamic_cast: this runs for every contact at every step
 		const IPhys* ip = I->phys.get();
 		const auto*  ph = (ip && ip->getClassIndex() == RbsmPhys::getClassIndexStatic()) ? static_cast<const RbsmPhys*>(ip) : nullptr;
-		if (ph && ph->kn > 0 && ph->nIntact() > 0) maxSeparation += 2 * ph->tensileStrength / ph->kn;
+		if (ph && ph->kn > 0 && ph->tensileStrength > 0 && ph->nIntact() > 0) maxSeparation += 2 * ph->tensileStrength / ph->kn;
 	}
-	const Real              minSize = 2 * std::min(A.circumradius, B.circumradius); // the smaller block's diameter
-	const rbsm::EdgeContact c       = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, minSize);
+	const Real            minSize = 2 * std::min(A.circumradius, B.circumradius); // the smaller block's diameter
+	const rbsm::BlockPose poseA { Vector2r::Zero(), 1, 0, A.circumradius }; // block 1's frame
+	const rbsm::BlockPose poseB { rel, relCos, relSin, B.circumradius };
+	rbsm::SearchMemory    newMemory; // a new contact's first search; kept in the geometry if it is made
+	rbsm::SearchMemory&   memory = g ? g->searchMemory : newMemory;
+	rbsm::EdgeContact     c      = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, minSize, &poseA, &poseB, &memory);
 	if (!existing && !(c.touching && c.length > 0)) return false; // no new contact
 	if (existing && !c.touching) {
 		// The blocks of an existing joint no longer face each other within reach: YADE expects the
@@ -118,12 +157,19 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		return true;
 	}
 	if (g) g->lost = false;
+	// back to the world frame: x ↦ x1 + R(θ1) x for points, R(θ1) for directions
+	auto toWorldDir   = [&](const Vector2r& v) { return Vector2r(cos1 * v.x() - sin1 * v.y(), sin1 * v.x() + cos1 * v.y()); };
+	c.normal          = toWorldDir(c.normal);
+	c.tangent         = toWorldDir(c.tangent);
+	c.p0              = state1.pos.head<2>() + toWorldDir(c.p0);
+	c.p1              = state1.pos.head<2>() + toWorldDir(c.p1);
 
 	if (!g) {
 		auto geom = shared_ptr<RbsmGeom>(new RbsmGeom);
 		rbsm::integrationPoints(nIP, geom->positions, geom->weights);
 		geom->thickness   = std::min(A.thickness, B.thickness);
 		geom->reducedMass = reducedMass(state1, state2);
+		geom->searchMemory = newMemory;
 		I->geom           = geom;
 		g                 = geom.get();
 	}
@@ -148,21 +194,28 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		reportDeepOverlap(*I, std::max(c.d0, c.d1), minSize, atSetUp, scene->iter);
 	}
 
-	const size_t n  = g->weights.size();
-	const Real   dt = scene->dt;
-	g->deltaN.resize(n);
-	g->shearIncrement.resize(n);
-	g->normalVelocity.resize(n);
-	g->shearVelocity.resize(n);
+	const size_t n = g->weights.size();
+	if (g->deltaN.size() != n) {
+		g->deltaN.resize(n);
+		g->shearIncrement.resize(n);
+		g->normalVelocity.resize(n);
+		g->shearVelocity.resize(n);
+	}
+	// Relative velocity of block 2 with respect to block 1 at a point x of the segment,
+	// v2 + ω2 × (x − c2) − v1 − ω1 × (x − c1), is linear in x: its value at p0 plus (ω2 − ω1) × (x − p0).
+	const Vector2r vRel0  = pointVelocity(state2, c.p0) - pointVelocity(state1, c.p0);
+	const Real     dOmega = state2.angVel.z() - state1.angVel.z();
+	const Vector2r seg    = c.p1 - c.p0;
+	const Vector2r dvds   = dOmega * Vector2r(-seg.y(), seg.x()); // d vRel / d s along p0 → p1
+	const Real     dt     = scene->dt;
 	for (size_t k = 0; k < n; k++) {
-		const Real     s = g->positions[k];
-		const Vector2r x = g->point(int(k));
+		const Real s = g->positions[k];
 		// overlap is linear between the segment ends because both block boundaries are straight
-		g->deltaN[k]            = (1 - s) * c.d0 + s * c.d1;
-		const Vector2r vRel     = pointVelocity(state2, x) - pointVelocity(state1, x);
-		g->normalVelocity[k]    = -vRel.dot(g->normal); // closing is positive, like the overlap
-		g->shearVelocity[k]     = vRel.dot(g->tangent);
-		g->shearIncrement[k]    = g->shearVelocity[k] * dt;
+		g->deltaN[k]         = (1 - s) * c.d0 + s * c.d1;
+		const Vector2r vRel  = vRel0 + s * dvds;
+		g->normalVelocity[k] = -vRel.dot(g->normal); // closing is positive, like the overlap
+		g->shearVelocity[k]  = vRel.dot(g->tangent);
+		g->shearIncrement[k] = g->shearVelocity[k] * dt;
 	}
 	return true;
 }

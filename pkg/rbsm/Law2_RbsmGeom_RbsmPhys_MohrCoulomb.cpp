@@ -33,14 +33,17 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	const bool damped = dampingRatio > 0 && g.reducedMass > 0 && area > 0;
 	p.dampingCoefficient = damped ? dampingRatio * 2 * std::sqrt(p.kn * area * g.reducedMass) / area : 0;
 
-	Vector2r force = Vector2r::Zero(); // on body 2
-	Real     torque1 = 0, torque2 = 0;
-	Real     elastic = 0, dissipated = 0, viscous = 0, normalForce = 0, shearForce = 0, strength = 0;
-	bool     carries = false;
+	// Force on body 2 and its moment about p0 summed over the points; the torques about the two
+	// centroids follow from them: M_c = M_p0 + (p0 − c) × F.
+	Vector2r       force = Vector2r::Zero();
+	Real           momentP0 = 0;
+	const Vector2r seg      = g.p1 - g.p0;
+	Real           elastic = 0, dissipated = 0, viscous = 0, normalForce = 0, shearForce = 0, strength = 0;
+	bool           carries = false;
 	for (size_t k = 0; k < n; k++) {
-		const Real           a = g.weights[k] * area;
-		rbsm::JointPointState st { p.shearTraction[k], p.intact[k], p.slipping[k], p.open[k] };
-		const rbsm::JointPointResult r = rbsm::updateJointPoint(st, params, g.deltaN[k], g.shearIncrement[k], a);
+		const Real            a = g.weights[k] * area;
+		rbsm::JointPointState st { p.shearTraction[k], p.intact[k] != 0, p.slipping[k] != 0, p.open[k] != 0 };
+		const rbsm::JointPointResult r = rbsm::updateJointPoint(st, params, g.deltaN[k], g.shearIncrement[k], a, scene->trackEnergy);
 		p.shearTraction[k]  = st.shearTraction;
 		p.intact[k]         = st.intact;
 		p.slipping[k]       = st.slipping;
@@ -60,16 +63,16 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		}
 		carries = carries || !st.open;
 		const Vector2r f = fn * g.normal + fs * g.tangent;
-		const Vector2r x = g.point(int(k));
 		force += f;
-		torque1 -= cross(x - g.centroid1, f);
-		torque2 += cross(x - g.centroid2, f);
+		momentP0 += g.positions[k] * cross(seg, f); // (x_k − p0) × f, x_k − p0 = s_k (p1 − p0)
 		elastic += r.elasticEnergy;
 		dissipated += r.dissipated;
 		normalForce += r.normalForce;
 		shearForce += r.shearForce;
 		strength += ((st.intact ? p.cohesion : 0) + std::max<Real>(0, r.normalTraction) * p.tanPhi) * a;
 	}
+	const Real torque2 = momentP0 + cross(g.p0 - g.centroid2, force);
+	const Real torque1 = -(momentP0 + cross(g.p0 - g.centroid1, force));
 	p.normalForce = normalForce;
 	p.shearForce  = shearForce;
 	p.strength    = strength;

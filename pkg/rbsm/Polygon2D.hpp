@@ -30,7 +30,10 @@ public:
 		((Real, polarMoment, 0, (Attr::readonly | Attr::noSave),
 			"Polar second moment of area about the centroid, J = ∫(x²+y²)dA [m⁴] (derived); "
 			"the polar inertia of a block is density·thickness·J [kg·m²]."))
-		((Real, circumradius, 0, (Attr::readonly | Attr::noSave), "Largest distance of a vertex from the centroid [m] (derived).")),
+		((Real, circumradius, 0, (Attr::readonly | Attr::noSave), "Largest distance of a vertex from the centroid [m] (derived)."))
+		((std::vector<Vector2r>, edgeNormals, , (Attr::readonly | Attr::noSave),
+			"Outward unit normals of the edges (edge i from vertex i to i+1) in the body's local frame (derived); the contact "
+			"geometry rotates them with the block instead of normalising every edge at every step.")),
 		/*ctor*/ createIndex();,
 		/*py*/ .def("worldVertices", &Polygon2D::pyWorldVertices, (boost::python::arg("pos"), boost::python::arg("ori")),
 			"World coordinates of the vertices for a body at *pos* with orientation *ori* (e.g. ``b.state.pos, b.state.ori``).")

@@ -1,6 +1,7 @@
 // RbsmGeom: geometry of an edge-to-edge contact between two Polygon2D blocks.
 #pragma once
 #include <core/IGeom.hpp>
+#include <pkg/rbsm/kernel/EdgeContact.hpp>
 
 namespace yade {
 
@@ -46,6 +47,10 @@ public:
 	);
 	// clang-format on
 	Vector2r point(int k) const { return p0 + positions.at(k) * (p1 - p0); }
+	/// What the last full separating-axis search of this contact found (rbsm::SearchMemory): lets the
+	/// next steps skip the search while it provably would choose the same edge. Not saved: after a
+	/// load the first step searches in full, with the same result.
+	rbsm::SearchMemory searchMemory;
 	size_t   nPoints() const { return weights.size(); }
 	REGISTER_CLASS_INDEX(RbsmGeom, IGeom);
 };

@@ -13,7 +13,8 @@ public:
 		for (auto&& ok : intact)
 			ok = false;
 	}
-	int countTrue(const std::vector<bool>& v) const { return int(std::count(v.begin(), v.end(), true)); }
+	using Flags = std::vector<unsigned char>; // per-point booleans; not std::vector<bool>, whose bit access costs in the law's loop
+	int countTrue(const Flags& v) const { return int(std::count_if(v.begin(), v.end(), [](unsigned char b) { return b != 0; })); }
 	int nIntact() const { return countTrue(intact); }
 	int nSlipping() const { return countTrue(slipping); }
 	int nOpen() const { return countTrue(open); }
@@ -21,11 +22,11 @@ public:
 	boost::python::list pyIntact() const { return toList(intact); }
 	boost::python::list pySlipping() const { return toList(slipping); }
 	boost::python::list pyOpen() const { return toList(open); }
-	static boost::python::list toList(const std::vector<bool>& v)
+	static boost::python::list toList(const Flags& v)
 	{
 		boost::python::list l;
-		for (bool b : v)
-			l.append(b);
+		for (unsigned char b : v)
+			l.append(b != 0);
 		return l;
 	}
 	// clang-format off
@@ -42,9 +43,9 @@ public:
 		((Real, dampingCoefficient, 0, (Attr::readonly | Attr::noSave), "Viscous traction per relative velocity [Pa·s/m] (from the law's dampingRatio)."))
 		((std::vector<Real>, shearTraction, , , "Shear traction τ_k at each integration point [Pa] (incremental elastic, returned to the Mohr-Coulomb surface on slip)."))
 		((std::vector<Real>, normalTraction, , Attr::readonly, "Normal traction σn_k at each integration point [Pa] (> 0 compression)."))
-		((std::vector<bool>, intact, , Attr::hidden, "Whether point k still has cohesion and tensile strength."))
-		((std::vector<bool>, slipping, , Attr::hidden, "Whether point k is on the Mohr-Coulomb surface (slipping) this step."))
-		((std::vector<bool>, open, , Attr::hidden, "Whether point k is broken and open (carries nothing)."))
+		((Flags, intact, , Attr::hidden, "Whether point k still has cohesion and tensile strength."))
+		((Flags, slipping, , Attr::hidden, "Whether point k is on the Mohr-Coulomb surface (slipping) this step."))
+		((Flags, open, , Attr::hidden, "Whether point k is broken and open (carries nothing)."))
 		((Real, normalForce, 0, Attr::readonly, "Resultant normal force of the joint [N] (> 0 compression), Σ σn_k a_k."))
 		((Real, shearForce, 0, Attr::readonly, "Resultant shear force of the joint [N] along the contact tangent, Σ τ_k a_k."))
 		((Real, strength, 0, Attr::readonly, "Shear strength of the joint at the current normal stress, Σ (c_k + σn_k tanφ) a_k [N] (c_k = 0 where broken)."))

@@ -290,3 +290,93 @@ TEST(EdgeContact, DeepOverlapIsFinite)
 	EXPECT_NEAR(c.length, 0.8, 1e-14);
 	expectVec(c.normal, Vec2(0, 1), 1e-15);
 }
+
+namespace {
+// Depth of q inside the convex CCW polygon P (> 0 inside): min over edges of -n_i.(q - P_i).
+Real insideDepth(const std::vector<Vec2>& P, const Vec2& q)
+{
+	Real m = INFINITY;
+	for (size_t i = 0; i < P.size(); ++i) {
+		const Vec2 e = P[(i + 1) % P.size()] - P[i];
+		m            = std::min(m, -Vec2(e.y(), -e.x()).normalized().dot(q - P[i]));
+	}
+	return m;
+}
+// Every overlap of the contact is a chord of the intersection: at both ends, the point p on the
+// reference line and the incident point p + d * (into the reference body) lie in both polygons.
+void expectChordsInBoth(const EdgeContact& c, const std::vector<Vec2>& A, const std::vector<Vec2>& B, Real tol)
+{
+	const Vec2 inward = c.refBody == 1 ? Vec2(-c.normal) : c.normal;
+	for (const auto& [p, d] : { std::make_pair(c.p0, c.d0), std::make_pair(c.p1, c.d1) }) {
+		if (d <= 0) continue;
+		for (const Vec2& q : { p, Vec2(p + d * inward) }) {
+			EXPECT_GE(insideDepth(A, q), -tol) << q.transpose();
+			EXPECT_GE(insideDepth(B, q), -tol) << q.transpose();
+		}
+	}
+}
+} // namespace
+
+// A sharp corner of B pokes through A's sloped shoulder next to A's short top edge (the mechanism
+// of the fuzzer's cgal_depth violations, e.g. seed 1 pair 0). A = (0,0) (1,0) (1,0.6) (0.6,1) (0,1):
+// top edge y = 1 for x in [0, 0.6], shoulder x + y = 1.6. B's corner v = (0.55, 0.95) with edges
+// along (1.45, 0.25) (e0, facing down) and (1.45, 0.65) (e2, facing up-left). Both cross the
+// shoulder at x > 0.6: e0 at X1 = v + (1/17)(1.45, 0.25), e2 at X2 = v + (1/21)(1.45, 0.65), so
+// A n B is the triangle v X1 X2, whose extent along y is 0.65/21 = 0.031.
+// Separating axes: A's top -0.05 (v), shoulder -0.1/sqrt2 = -0.0707, B's e0 -0.143: the top edge is
+// the reference of the axis search. The kernel used to report the depth of v below the top line,
+// 0.05 > 0.031: the top line passes outside B above v (B's corner leans away), so that is no overlap.
+// Now: no chord of A n B ends on the top edge nor on B's e0, and the contact is on the edge that
+// B crossed, the shoulder (normal (1,1)/sqrt2), from X2 to X1. Its overlap is the chord of the
+// triangle along the normal: 0 at X1, and at X2 the distance to the point q of e0 whose foot on the
+// shoulder is X2: q = v + (2/63)(1.45, 0.25) (q + d n = X2 in x, with d = (0.1 - 1.7 lambda)/sqrt2
+// gives 0.6 lambda = 1.45/21 - 0.05), d = (0.1 - 1.7 * 2/63)/sqrt2 = 2.9/(63 sqrt2) = 0.03255.
+// Length |X1 - X2| = sqrt2 * 1.45 (1/17 - 1/21) = sqrt2 * 5.8/357.
+TEST(EdgeContact, SharpCornerThroughShoulderGivesTheChord)
+{
+	const std::vector<Vec2> A = { { 0, 0 }, { 1, 0 }, { 1, 0.6 }, { 0.6, 1 }, { 0, 1 } };
+	const Vec2              v(0.55, 0.95);
+	const std::vector<Vec2> B = { v, { 2.0, 1.2 }, { 2.0, 1.6 } };
+	ASSERT_EQ(polygonProblem(A), "");
+	ASSERT_EQ(polygonProblem(B), "");
+	const Vec2 X1 = v + Vec2(1.45, 0.25) / 17, X2 = v + Vec2(1.45, 0.65) / 21;
+	const Real dX2 = 2.9 / (63 * std::sqrt(2.0)), len = std::sqrt(2.0) * 5.8 / 357;
+	for (int order = 0; order < 2; ++order) {
+		const auto c = order == 0 ? edgeContact(A, B, 0) : edgeContact(B, A, 0);
+		expectConventions(c);
+		EXPECT_EQ(c.refBody, order == 0 ? 1 : 2);
+		EXPECT_EQ(c.refEdge, 2); // the shoulder (1,0.6) -> (0.6,1)
+		expectVec(c.normal, Vec2(1, 1).normalized() * (order == 0 ? 1 : -1), 1e-14);
+		EXPECT_NEAR(c.separation, -0.1 / std::sqrt(2.0), 1e-14);
+		EXPECT_NEAR(c.length, len, 1e-11);
+		// d = dX2 at X2, 0 at X1 (t = (-1,1)/sqrt2 for A-B: p0 = X1; the opposite for B-A)
+		const Vec2 pX1 = order == 0 ? c.p0 : c.p1, pX2 = order == 0 ? c.p1 : c.p0;
+		const Real dX1 = order == 0 ? c.d0 : c.d1, dAtX2 = order == 0 ? c.d1 : c.d0;
+		expectVec(pX1, X1, 1e-11);
+		expectVec(pX2, X2, 1e-11);
+		EXPECT_NEAR(dX1, 0, 1e-11);
+		EXPECT_NEAR(dAtX2, dX2, 1e-11);
+		EXPECT_LE(std::max(c.d0, c.d1), 0.1 / std::sqrt(2.0)); // within the triangle's extent along n
+		expectChordsInBoth(c, A, B, 1e-11); // the clips allow the 1e-12 * size round-off slop
+	}
+}
+
+// The fuzzer's seed-1 pair 0 itself (coordinates as printed by RBSM_FUZZ_VERBOSE=1): B's corner
+// B[4] pierces A's thin tip. The axis search picks A's short edge 1; the kernel reported B[4]'s
+// depth below that line, 0.0025263, more than the extent of A n B along its normal (0.0024644,
+// CGAL). Every overlap reported must now be a chord of A n B (both ends in both polygons).
+TEST(EdgeContact, FuzzSeed1Pair0OverlapIsAChord)
+{
+	const std::vector<Vec2> A = { { -2.3756776885897177, 0.78033980987356322 }, { -2.3723190884371057, 0.78059469790267677 },
+		{ -2.3624161691668153, 0.78364456067969468 }, { -2.2980851655033203, 0.81374680537255828 }, { -2.2400857544651189, 0.8541485453878046 } };
+	const std::vector<Vec2> B = { { -2.2895228859720103, 0.77951335075117445 }, { -2.3107472745591102, 0.78612902745370006 },
+		{ -2.3175711416365004, 0.78823637569291982 }, { -2.3460283595431157, 0.78814748363517084 }, { -2.3673991854671677, 0.78475330731147386 },
+		{ -2.3331451112432973, 0.77890974909371502 } };
+	for (int order = 0; order < 2; ++order) {
+		const auto c = order == 0 ? edgeContact(A, B, 0, nullptr, 1e-6) : edgeContact(B, A, 0, nullptr, 1e-6);
+		expectConventions(c);
+		EXPECT_GT(std::max(c.d0, c.d1), 0);
+		EXPECT_LT(std::max(c.d0, c.d1), 0.0024644);
+		expectChordsInBoth(c, order == 0 ? A : B, order == 0 ? B : A, 1e-12); // slop 1e-12 * 0.078
+	}
+}

@@ -47,6 +47,43 @@ struct ContactHint {
 	int refEdge = -1;
 };
 
+/// A convex CCW polygon in world coordinates as the hot path hands it over, without copies:
+/// n vertices v[i] and the outward unit normals nrm[i] of its edges i (vertex i -> i+1). A block's
+/// normals are fixed in its own frame, so the caller rotates them with the vertices instead of
+/// normalising every edge of every contact at every step.
+struct PolygonView {
+	const Vec2* v   = nullptr;
+	const Vec2* nrm = nullptr;
+	int         n   = 0;
+};
+
+/// Pose of a rigid block (world frame): centroid, cos and sin of its rotation angle, and its
+/// circumradius about the centroid (m). Needed only for the temporal coherence below.
+struct BlockPose {
+	Vec2 centroid = Vec2::Zero();
+	Real cos = 1, sin = 0;
+	Real radius = 0;
+};
+
+/// What a full separating-axis search leaves for the next steps of the same contact (temporal
+/// coherence, in the spirit of Box2D's and Bullet's cached separating axes, but exact): the edge it
+/// chose, its two closest rivals (for two blocks sharing an edge, the other block's twin edge has
+/// the same separation: it must be watched exactly, not bounded), the largest separation of all the
+/// remaining edges at that moment, and the pose of B relative to A then. While the chosen edge's
+/// separation now is within the hysteresis of its rivals' (recomputed) and of that old maximum plus
+/// the largest change a rigid motion since then can have made of any separation (see edgeContact),
+/// a new full search would choose the same edge again, so it is skipped: the result is identical to
+/// the full search, only cheaper. Owned by the caller (one per contact); a default-constructed
+/// (invalid) memory forces a full search.
+struct SearchMemory {
+	bool valid   = false;
+	int  refBody = 0, refEdge = -1;
+	int  rivalBody[2] = { 0, 0 }, rivalEdge[2] = { -1, -1 }; ///< the two next-best edges (body 0: none)
+	Real maxOther = 0;            ///< largest separation of all other edges at the search (m)
+	Vec2 rel      = Vec2::Zero(); ///< centroid of B in A's frame at the search (m)
+	Real relCos = 1, relSin = 0;  ///< rotation of B relative to A at the search
+};
+
 /// Computes the edge-to-edge contact of A (body 1) and B (body 2).
 ///
 /// Separating-axis search: for every edge i of either polygon, with outward unit normal n_i and
@@ -60,8 +97,14 @@ struct ContactHint {
 /// maxSeparation (m, >= 0): if the largest separation exceeds it, there is no contact. A round-off
 /// slop of 1e-12 * min(size A, size B) is added so that exactly shared edges count as touching.
 /// Otherwise the incident edge (the edge of the other polygon whose outward normal is most
-/// anti-parallel to n_ref) is clipped to (i) the two side planes of the reference edge and
-/// (ii) the part where the gap is at most maxSeparation (d >= -maxSeparation).
+/// anti-parallel to n_ref) is clipped to (i) the two side planes of the reference edge,
+/// (ii) the part where the gap is at most maxSeparation (d >= -maxSeparation), (iii) the part
+/// inside the reference polygon's other edges and (iv) the part whose foot on the reference line
+/// lies inside the incident polygon: with (iii) and (iv) every overlap d is a chord of the two
+/// polygons' intersection (checked against CGAL by tests/fuzz). If nothing is left (a corner
+/// poking in obliquely), the other polygon's best edge is tried, then every pair of facing edges;
+/// only if none leaves anything (one polygon inside the other) the plain projection (i)-(ii) on
+/// the chosen edge is returned.
 ///
 /// minSize (m): the size that scales the hysteresis and the round-off slop; by default (< 0) the
 /// smaller of the two polygons' bounding-box sizes (polygonSize), which a caller that knows its
@@ -73,6 +116,30 @@ EdgeContact edgeContact(
         const ContactHint*       hint       = nullptr,
         Real                     hysteresis = 1e-3,
         Real                     minSize    = -1);
+
+/// The same contact for a caller that follows it from step to step (the plugin's Ig2): polygons
+/// as views with their edge normals, minSize > 0 given, and optionally the poses of the two blocks
+/// and the contact's SearchMemory (both or neither), which enable the skip of the search:
+///
+/// Skip rule. In A's frame, B's vertices move by at most |Δr| + χ R_B since the memory's search,
+/// where Δr is the change of B's centroid in A's frame and χ = |(cosθ', sinθ') − (cosθ, sinθ)|
+/// = 2|sin(Δθ/2)| the chord of the relative rotation; in B's frame A's vertices move by at most
+/// |Δr| + χ (R_A + |r|). Every edge separation (a minimum of n·(w − v) over vertices w, with n and
+/// v fixed in the edge's own frame) has thus changed by at most D = |Δr| + χ (R_A + R_B + |r|).
+/// If the hinted edge's separation s_ref satisfies  s_ref + tol ≥ maxOther + D + pad  and
+/// s_ref + tol ≥ the rivals' separations (computed now), no edge can now be better than it by more
+/// than tol, so the full search would keep it: it is used directly. pad = 1e-9 (|c_A| + |c_B| + R_A + R_B) covers round-off of the world coordinates.
+/// If its clipped segment is empty, the full search runs (and decides as it always does).
+EdgeContact edgeContact(
+        const PolygonView& A,
+        const PolygonView& B,
+        Real               maxSeparation,
+        const ContactHint* hint,
+        Real               hysteresis,
+        Real               minSize,
+        const BlockPose*   poseA  = nullptr,
+        const BlockPose*   poseB  = nullptr,
+        SearchMemory*      memory = nullptr);
 
 /// Gauss-Legendre integration points on the contact segment, nIP in 1..8 (throws
 /// std::invalid_argument otherwise). s: parametric positions in [0,1] from p0 to p1 (increasing);
