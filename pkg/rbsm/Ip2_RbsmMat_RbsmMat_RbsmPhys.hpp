@@ -25,7 +25,7 @@ public:
 		"assembly are bonded at the start, contacts made later (blocks sliding onto others) are frictional.",
 		((bool, setCohesionNow, false, , "Make the contacts created during the next step intact (bonded); reset to False after that step."))
 		((bool, setCohesionOnNewContacts, false, , "Make every new contact intact (bonded)."))
-		((long, cohesionIter, -1, (Attr::hidden | Attr::noSave), "Step at which setCohesionNow took effect.")),
+		((long, cohesionIter, -1, Attr::hidden, "Step at which setCohesionNow took effect (saved: a scene saved while setCohesionNow is pending must not bond the contacts of the first step after the load).")),
 		/*ctor*/,
 		/*py*/
 	);

@@ -40,7 +40,7 @@ public:
 		((Real, cohesion, 0, , "Cohesion c of the joint while intact [Pa]."))
 		((Real, tanPhi, 0, , "tan φ of the joint friction angle."))
 		((Real, tensileStrength, 0, , "Tensile strength σt of the joint while intact [Pa]."))
-		((Real, dampingCoefficient, 0, (Attr::readonly | Attr::noSave), "Viscous traction per relative velocity [Pa·s/m] (from the law's dampingRatio)."))
+		((Real, dampingCoefficient, 0, Attr::readonly, "Viscous traction per relative velocity [Pa·s/m] (from the law's dampingRatio; saved, so that RbsmTimeStepper.estimate() of a loaded scene is right before its first step)."))
 		((std::vector<Real>, shearTraction, , , "Shear traction τ_k at each integration point [Pa] (incremental elastic, returned to the Mohr-Coulomb surface on slip)."))
 		((std::vector<Real>, normalTraction, , Attr::readonly, "Normal traction σn_k at each integration point [Pa] (> 0 compression)."))
 		((Flags, intact, , Attr::hidden, "Whether point k still has cohesion and tensile strength."))

@@ -81,7 +81,8 @@ Real RbsmTimeStepper::estimate()
 
 void RbsmTimeStepper::action()
 {
-	if (lastCheck >= 0 && scene->iter - lastCheck < interval) return;
+	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: check now)
+	if (lastCheck >= 0 && scene->iter >= lastCheck && scene->iter - lastCheck < interval) return;
 	lastCheck        = scene->iter;
 	const Real dtMax = safetyFactor * estimate();
 	if (!std::isfinite(dtMax)) return; // no joint yet: nothing limits the step

@@ -32,7 +32,7 @@ public:
 		((bool, setDt, false, , "Set O.dt to safetyFactor·dt_crit (True) or only check it and refuse an unstable O.dt (False)."))
 		((int, interval, 100, Attr::triggerPostLoad, "Check every this many steps (the first step is always checked). One estimate costs about one InteractionLoop pass (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
 		((bool, dtWasSet, false, , "Whether this engine has set O.dt already; from then on it only lowers O.dt (a corner contact found at a check may stiffen before the next one)."))
-		((long, lastCheck, -1, (Attr::readonly | Attr::noSave), "Step of the last check."))
+		((long, lastCheck, -1, Attr::readonly, "Step of the last check (saved with the scene, so that a loaded scene is checked on the same steps as an uninterrupted run)."))
 		((Real, criticalDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step found at the last check [s].")),
 		/*ctor*/,
 		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the current system [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")

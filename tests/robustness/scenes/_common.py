@@ -109,3 +109,41 @@ def joint_states(O):
                     "dn": list(i.geom.deltaN), "plast": p.plasticDissipation})
     out.sort(key=lambda j: j["ids"])
     return out
+
+
+# ---- save / load / continue (test_persistence.py) -------------------------------------------------
+def loop_order(O):
+    """The real interactions, in the order InteractionLoop visits them (the container's order, or
+    sorted by ids with InteractionLoop.loopOnSortedInteractions)."""
+    real = [(i.id1, i.id2) for i in O.interactions.all(False) if i.isReal]
+    loop = [e for e in O.engines if e.__class__.__name__ == "InteractionLoop"][0]
+    return sorted(real) if loop.loopOnSortedInteractions else real
+
+
+def state_digest(O, phys_values):
+    """SHA-1 of the exact state after a step, every float as hex: each body's position, orientation,
+    velocities, force and torque; each real interaction's ids and phys_values(phys) (a list of floats
+    and bools); O.dt, O.time and the energies."""
+    import hashlib
+
+    h = hashlib.sha1()
+    for b in O.bodies:
+        s = b.state
+        for v in (s.pos, s.ori, s.vel, s.angVel, O.forces.f(b.id), O.forces.t(b.id)):
+            h.update(" ".join(float(v[i]).hex() for i in range(len(v))).encode())
+    for i in sorted(O.interactions, key=lambda i: (i.id1, i.id2)):
+        h.update(repr((i.id1, i.id2)).encode())
+        h.update(" ".join(repr(x) if isinstance(x, bool) else float(x).hex() for x in phys_values(i.phys)).encode())
+    h.update(" ".join(float(x).hex() for x in [O.dt, O.time] + [v for k, v in sorted(O.energy.items())]).encode())
+    return h.hexdigest()
+
+
+def traced_steps(O, n, phys_values):
+    """n steps one by one, each recorded: 'iter' after the step, 'before' and 'after' the real
+    interactions in loop order before and after the step, 'digest' the state_digest() after it."""
+    steps = []
+    for k in range(n):
+        before = loop_order(O)
+        O.step()
+        steps.append({"iter": O.iter, "before": before, "after": loop_order(O), "digest": state_digest(O, phys_values)})
+    return steps
