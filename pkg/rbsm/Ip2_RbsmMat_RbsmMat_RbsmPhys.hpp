@@ -23,7 +23,7 @@ public:
 		"intact (cohesive, tensile) only if made while :yref:`setCohesionNow<Ip2_RbsmMat_RbsmMat_RbsmPhys.setCohesionNow>` or "
 		":yref:`setCohesionOnNewContacts<Ip2_RbsmMat_RbsmMat_RbsmPhys.setCohesionOnNewContacts>` is set: the joints of a block "
 		"assembly are bonded at the start, contacts made later (blocks sliding onto others) are frictional.",
-		((bool, setCohesionNow, false, , "Make the contacts created during the next step intact (bonded); reset to False after that step."))
+		((bool, setCohesionNow, false, , "Make the contacts created during the next step that creates contacts intact (bonded), normally the first step of a block assembly; reset to False after that step. (Set while no contact forms, it waits for the first step that makes one.)"))
 		((bool, setCohesionOnNewContacts, false, , "Make every new contact intact (bonded)."))
 		((long, cohesionIter, -1, Attr::hidden, "Step at which setCohesionNow took effect (saved: a scene saved while setCohesionNow is pending must not bond the contacts of the first step after the load).")),
 		/*ctor*/,

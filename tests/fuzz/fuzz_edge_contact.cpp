@@ -2,7 +2,7 @@
 // against CGAL's exact polygon predicates and constructions (issue 6, "Fuzzing the contact geometry").
 //
 // Run:  fuzz_edge_contact                 (default 100000 random pairs, seed 1; ctest fuzz.edge_contact)
-//       RBSM_FUZZ_N=10000000 fuzz_edge_contact     long run (about 15 µs per pair on one core)
+//       RBSM_FUZZ_N=10000000 fuzz_edge_contact     long run (about 27 µs per pair on one core, most of it CGAL)
 //       RBSM_FUZZ_SEED=7 ...                       another random stream
 //       RBSM_FUZZ_VERBOSE=1 ...                    print the first few violations of every kind
 // Exit status 0 if no check failed (see the list below), 1 otherwise; a summary table is printed.
