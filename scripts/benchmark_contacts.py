@@ -67,7 +67,7 @@ def build_wall(nIP=2, verlet=VERLET_REL * BH):
         for i in range(NX):
             xa, xb = i * BW + off, (i + 1) * BW + off
             O.bodies.append(polygon2d([(xa, y0), (xb, y0), (xb, y1), (xa, y1)], mat))
-    O.engines = rbsm_engines(gravity=(0, -9.81, 0), damping=0.2, nIP=nIP, safety=0.8, set_dt=True, interval=10)
+    O.engines = rbsm_engines(gravity=(0, -9.81, 0), damping=0.2, nIP=nIP, safety=0.8, set_dt=True)  # default interval (100)
     O.engines[1].verletDist = verlet
     O.dt = 1e-6  # replaced by RbsmTimeStepper at the first step
 
