@@ -52,7 +52,7 @@ What a save keeps, and what it cannot (measured with a per-step dump of both run
   circumradius; Law2's energy indices) are recomputed before they are used, at every step or on load.
 
 Prerequisite checked: joints broke and slipped before the save, so the saved state is not trivial.
-Steps: n1 = 1500 before the save (15000 with RBSM_LONG=1), 300 after it with the sorted loop, 60 after it
+Steps: n1 = 1500 before the save (6000 with RBSM_LONG=1; by 15000 no joint is left), 300 after it with the sorted loop, 60 after it
 with the container's order (the tolerance after the first reordering, 1e-12 relative, holds there).
 """
 import os
@@ -61,7 +61,7 @@ import pytest
 
 from conftest import run_scene, LONG
 
-N1 = 15000 if LONG else 1500
+N1 = 6000 if LONG else 1500  # by 15000 steps the wall has come apart: no joint left to compare
 N2_SORTED = 300
 N2 = 60
 TOL = 1e-12
@@ -108,7 +108,7 @@ def check_saved_wall(saved):
     js = saved["joints"]
     broken = sum(1 for j in js for x in j["intact"] if not x)
     slipping = sum(1 for j in js for x in j["slipping"] if x)
-    tau = max(abs(t) for j in js for t in j["tau"])
+    tau = max((abs(t) for j in js for t in j["tau"]), default=0.0)
     print("at the save: %d joints, %d broken points, %d slipping points, max |tau| %.3g Pa"
           % (len(js), broken, slipping, tau))
     assert broken > 0 and tau > 0, "the saved scene must hold broken joints and shear traction"
