@@ -227,8 +227,12 @@ EdgeContact edgeContact(
 			auto       sepOf   = [&](int body, int edge) { return (body == 1) ? edgeSeparation(A, edge, B) : edgeSeparation(B, edge, A); };
 			const Real prefSep = sepOf(rb, re);
 			bool       keep    = prefSep + tol >= memory->maxOther + drift;
-			for (int k = 0; k < 2 && keep; ++k)
-				if (memory->rivalBody[k] != 0) keep = prefSep + tol >= sepOf(memory->rivalBody[k], memory->rivalEdge[k]);
+			for (int k = 0; k < 2 && keep; ++k) {
+				if (memory->rivalBody[k] == 0) continue;
+				// a rival ahead of the kept edge by m then is ahead by at most m + 2D now
+				if (memory->rivalLead[k] + 2 * drift <= tol) continue;
+				keep = prefSep + tol >= sepOf(memory->rivalBody[k], memory->rivalEdge[k]);
+			}
 			if (keep) {
 				c.separation = prefSep;
 				c.refBody    = rb;
@@ -294,7 +298,13 @@ EdgeContact edgeContact(
 	// Remember the choice for the skip rule: its two closest rivals, and the largest separation
 	// of every other edge now.
 	if (coherent) {
-		SearchMemory m { false, refBody, refEdge, { 0, 0 }, { -1, -1 }, -std::numeric_limits<Real>::infinity(), rel, relCos, relSin };
+		SearchMemory m;
+		m.refBody  = refBody;
+		m.refEdge  = refEdge;
+		m.maxOther = -std::numeric_limits<Real>::infinity();
+		m.rel      = rel;
+		m.relCos   = relCos;
+		m.relSin   = relSin;
 		Real         rivalSep[2] = { -std::numeric_limits<Real>::infinity(), -std::numeric_limits<Real>::infinity() };
 		// A rival is an edge within a tenth of the block size of the chosen one (the other block's
 		// twin of a shared edge, the two edges of a corner); farther ones are bounded by maxOther.
@@ -319,6 +329,8 @@ EdgeContact edgeContact(
 			offer(1, i, sepsA[i]);
 		for (int i = 0; i < nB; ++i)
 			offer(2, i, sepsB[i]);
+		for (int k = 0; k < 2; ++k)
+			m.rivalLead[k] = rivalSep[k] - sep;
 		*memory = m;
 	}
 

@@ -79,6 +79,7 @@ struct SearchMemory {
 	bool valid   = false;
 	int  refBody = 0, refEdge = -1;
 	int  rivalBody[2] = { 0, 0 }, rivalEdge[2] = { -1, -1 }; ///< the two next-best edges (body 0: none)
+	Real rivalLead[2] = { 0, 0 };  ///< their separation minus the chosen edge's at the search (m)
 	Real maxOther = 0;            ///< largest separation of all other edges at the search (m)
 	Vec2 rel      = Vec2::Zero(); ///< centroid of B in A's frame at the search (m)
 	Real relCos = 1, relSin = 0;  ///< rotation of B relative to A at the search
@@ -127,8 +128,9 @@ EdgeContact edgeContact(
 /// |Δr| + χ (R_A + |r|). Every edge separation (a minimum of n·(w − v) over vertices w, with n and
 /// v fixed in the edge's own frame) has thus changed by at most D = |Δr| + χ (R_A + R_B + |r|).
 /// If the hinted edge's separation s_ref satisfies  s_ref + tol ≥ maxOther + D + pad  and
-/// s_ref + tol ≥ the rivals' separations (computed now), no edge can now be better than it by more
-/// than tol, so the full search would keep it: it is used directly. pad = 1e-9 (|c_A| + |c_B| + R_A + R_B) covers round-off of the world coordinates.
+/// s_ref + tol ≥ the rivals' separations, no edge can now be better than it by more than tol, so the
+/// full search would keep it: it is used directly. A rival's separation is computed now unless its
+/// lead over the kept edge at the search plus 2D is within tol (both moved by at most D). pad = 1e-9 (|c_A| + |c_B| + R_A + R_B) covers round-off of the world coordinates.
 /// If its clipped segment is empty, the full search runs (and decides as it always does).
 EdgeContact edgeContact(
         const PolygonView& A,
