@@ -121,5 +121,4 @@ inline JointPointResult updateJointPoint(JointPointState& s, const JointParams& 
 	return r;
 }
 
-
 } // namespace rbsm
