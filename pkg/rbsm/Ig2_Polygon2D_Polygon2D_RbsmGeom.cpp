@@ -42,16 +42,12 @@ namespace {
 			const Vector2r& v = shape.vertices[i];
 			out[i]            = rbsm::Vec2(pos.x() + c * v.x() - s * v.y(), pos.y() + s * v.x() + c * v.y());
 		}
-		if (shape.edgeNormals.size() == size_t(n)) {
-			for (int i = 0; i < n; i++) {
-				const Vector2r& e = shape.edgeNormals[i];
-				out[n + i]        = rbsm::Vec2(c * e.x() - s * e.y(), s * e.x() + c * e.y());
-			}
-		} else { // a shape whose derived data were not made (built in C++ without postLoad)
-			for (int i = 0; i < n; i++) {
-				const rbsm::Vec2 e = out[(i + 1) % n] - out[i];
-				out[n + i]         = rbsm::Vec2(e.y(), -e.x()).normalized();
-			}
+		const std::vector<Vector2r>* normals = &shape.edgeNormals;
+		std::vector<Vector2r>        made; // a shape whose derived data were not made (built in C++ without postLoad)
+		if (normals->size() != size_t(n)) normals = &(made = rbsm::edgeNormals(shape.vertices));
+		for (int i = 0; i < n; i++) {
+			const Vector2r& e = (*normals)[i];
+			out[n + i]        = rbsm::Vec2(c * e.x() - s * e.y(), s * e.x() + c * e.y());
 		}
 		return rbsm::PolygonView { out, out + n, n };
 	}

@@ -29,11 +29,7 @@ void Polygon2D::postLoad(Polygon2D& p)
 	p.circumradius = 0;
 	for (const auto& x : v)
 		p.circumradius = std::max(p.circumradius, x.norm());
-	p.edgeNormals.resize(v.size());
-	for (size_t i = 0; i < v.size(); i++) {
-		const rbsm::Vec2 e = v[(i + 1) % v.size()] - v[i];
-		p.edgeNormals[i]   = Vector2r(e.y(), -e.x()).normalized();
-	}
+	p.edgeNormals  = rbsm::edgeNormals(v);
 }
 
 Vector2r Polygon2D::worldVertex(size_t i, const Vector2r& pos, Real angle) const

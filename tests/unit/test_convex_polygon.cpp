@@ -134,3 +134,18 @@ TEST(PolygonProblem, SelfIntersecting)
 	const auto t = polygonProblem(star);
 	EXPECT_TRUE(contains(t, "self-intersecting")) << t;
 }
+
+// Outward normals of a CCW polygon: a unit square gives -y, +x, +y, -x (edges bottom, right, top,
+// left); a right triangle's hypotenuse gives (1, 1)/sqrt 2.
+TEST(EdgeNormals, SquareAndTriangle)
+{
+	const auto sq = edgeNormals({ { 0, 0 }, { 2, 0 }, { 2, 2 }, { 0, 2 } });
+	ASSERT_EQ(sq.size(), 4u);
+	EXPECT_EQ(sq[0], Vec2(0, -1));
+	EXPECT_EQ(sq[1], Vec2(1, 0));
+	EXPECT_EQ(sq[2], Vec2(0, 1));
+	EXPECT_EQ(sq[3], Vec2(-1, 0));
+	const auto tri = edgeNormals({ { 0, 0 }, { 1, 0 }, { 0, 1 } });
+	EXPECT_NEAR(tri[1].x(), 1 / std::sqrt(2.0), 1e-15);
+	EXPECT_NEAR(tri[1].y(), 1 / std::sqrt(2.0), 1e-15);
+}

@@ -36,6 +36,17 @@ namespace {
 	}
 } // namespace
 
+std::vector<Vec2> edgeNormals(const std::vector<Vec2>& v)
+{
+	const size_t      n = v.size();
+	std::vector<Vec2> out(n);
+	for (size_t i = 0; i < n; ++i) {
+		const Vec2 e = v[(i + 1) % n] - v[i];
+		out[i]       = Vec2(e.y(), -e.x()).normalized();
+	}
+	return out;
+}
+
 Real polygonSize(const std::vector<Vec2>& v)
 {
 	if (v.empty()) return 0;

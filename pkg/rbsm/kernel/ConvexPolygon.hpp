@@ -21,6 +21,10 @@ namespace rbsm {
 /// 1e-9 L; three consecutive vertices are "collinear" if the sine of the turn angle is below 1e-9.
 std::string polygonProblem(const std::vector<Vec2>& v);
 
+/// Outward unit normals of the edges of a counter-clockwise polygon: entry i is the normal of the
+/// edge from v[i] to v[i+1], the edge vector rotated by -90 deg and normalised.
+std::vector<Vec2> edgeNormals(const std::vector<Vec2>& v);
+
 /// Size of a polygon: the largest side of its axis-aligned bounding box (m). 0 for empty input.
 Real polygonSize(const std::vector<Vec2>& v);
 

@@ -10,17 +10,6 @@
 namespace rbsm {
 
 namespace {
-	// Outward unit normals of a polygon's edges, computed from its vertices (the vector API).
-	void edgeNormals(const std::vector<Vec2>& P, std::vector<Vec2>& out)
-	{
-		const size_t n = P.size();
-		out.resize(n);
-		for (size_t i = 0; i < n; ++i) {
-			const Vec2 e = P[(i + 1) % n] - P[i];
-			out[i]       = Vec2(e.y(), -e.x()).normalized();
-		}
-	}
-
 	// Small per-call buffer: on the stack for the usual blocks (no heap, no thread_local lookup,
 	// which in a shared library costs a call of __tls_get_addr), on the heap beyond.
 	template <class T, int N> class SmallBuffer {
@@ -181,9 +170,7 @@ namespace {
 EdgeContact edgeContact(const std::vector<Vec2>& A, const std::vector<Vec2>& B, Real maxSeparation, const ContactHint* hint, Real hysteresis, Real minSizeGiven)
 {
 	if (A.size() < 3 || B.size() < 3) return EdgeContact {};
-	std::vector<Vec2> normalsA, normalsB;
-	edgeNormals(A, normalsA);
-	edgeNormals(B, normalsB);
+	const std::vector<Vec2> normalsA = edgeNormals(A), normalsB = edgeNormals(B);
 	const Real minSize = minSizeGiven >= 0 ? minSizeGiven : std::min(polygonSize(A), polygonSize(B));
 	return edgeContact(
 	        PolygonView { A.data(), normalsA.data(), int(A.size()) },
