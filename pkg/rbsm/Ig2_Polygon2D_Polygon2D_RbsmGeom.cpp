@@ -3,6 +3,7 @@
 #include <core/Scene.hpp>
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
+#include <pkg/rbsm/kernel/FrozenContact.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
 
 #include <atomic>
@@ -22,6 +23,10 @@ void Ig2_Polygon2D_Polygon2D_RbsmGeom::postLoad(Ig2_Polygon2D_Polygon2D_RbsmGeom
 		        "Ig2_Polygon2D_Polygon2D_RbsmGeom.interactionDistance: must be a finite distance >= 0 (got " + std::to_string(interactionDistance) + ")");
 	if (!(std::isfinite(hysteresis) && hysteresis >= 0))
 		throw std::invalid_argument("Ig2_Polygon2D_Polygon2D_RbsmGeom.hysteresis: must be a finite number >= 0 (got " + std::to_string(hysteresis) + ")");
+	if (!(std::isfinite(updateTolerance) && updateTolerance >= 0 && updateTolerance < 0.1))
+		throw std::invalid_argument(
+		        "Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance: must be a finite fraction of the block size in [0, 0.1) (got "
+		        + std::to_string(updateTolerance) + "; 0 = exact geometry at every step)");
 }
 
 namespace {
@@ -119,15 +124,12 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	const Vector2r d12 = state2.pos.head<2>() - state1.pos.head<2>();
 	const Vector2r rel(cos1 * d12.x() + sin1 * d12.y(), -sin1 * d12.x() + cos1 * d12.y()); // R(−θ1)(x2 − x1)
 	const Real     relCos = cos1 * cos2 + sin1 * sin2, relSin = cos1 * sin2 - sin1 * cos2;  // θ2 − θ1
-	rbsm::Vec2              stackA[2 * kStackVertices], stackB[2 * kStackVertices];
-	std::vector<rbsm::Vec2> heapA, heapB;
-	const rbsm::PolygonView va = ownFramePolygon(A, stackA, heapA);
-	const rbsm::PolygonView vb = placedPolygon(B, rel, relCos, relSin, stackB, heapB);
+	const bool         existing = I->geom && !force;
+	RbsmGeom*          g        = existing ? static_cast<RbsmGeom*>(I->geom.get()) : nullptr;
+	const Real         minSize  = 2 * std::min(A.circumradius, B.circumradius); // the smaller block's diameter
+	const rbsm::RelativePose relPose { rel, relCos, relSin };
+	rbsm::EdgeContact  c;
 
-	const bool        existing = I->geom && !force;
-	RbsmGeom*         g        = existing ? static_cast<RbsmGeom*>(I->geom.get()) : nullptr;
-	rbsm::ContactHint hint;
-	if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
 	// New contacts need touch or closeness. An existing joint is followed while it opens as far
 	// as its intact springs can hold tension (σt/kn, doubled as margin) so that the law, not the
 	// geometry, breaks it. The same distance trims the facing edge to the part that touches.
@@ -138,21 +140,55 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		const auto*  ph = (ip && ip->getClassIndex() == RbsmPhys::getClassIndexStatic()) ? static_cast<const RbsmPhys*>(ip) : nullptr;
 		if (ph && ph->kn > 0 && ph->tensileStrength > 0 && ph->nIntact() > 0) maxSeparation += 2 * ph->tensileStrength / ph->kn;
 	}
-	const Real            minSize = 2 * std::min(A.circumradius, B.circumradius); // the smaller block's diameter
-	const rbsm::BlockPose poseA { Vector2r::Zero(), 1, 0, A.circumradius }; // block 1's frame
-	const rbsm::BlockPose poseB { rel, relCos, relSin, B.circumradius };
-	rbsm::SearchMemory    newMemory; // a new contact's first search; kept in the geometry if it is made
-	rbsm::SearchMemory&   memory = g ? g->searchMemory : newMemory;
-	rbsm::EdgeContact     c      = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, minSize, &poseA, &poseB, &memory);
-	if (!existing && !(c.touching && c.length > 0)) return false; // no new contact
-	if (existing && !c.touching) {
-		// The blocks of an existing joint no longer face each other within reach: YADE expects the
-		// law, not the geometry, to end an interaction, so the joint is handed over as lost.
-		g->lost       = true;
-		g->separation = c.separation;
-		return true;
+
+	// Frozen kinematics (updateTolerance > 0): a joint that has moved little since its last exact
+	// update is followed as material points, without search or clipping, as long as the exact
+	// contact would not trim it either: every overlap within reach, d ≥ −maxSeparation (with the
+	// kernel's round-off slop). A joint opening beyond gets the exact geometry.
+	bool frozen = false;
+	if (g && updateTolerance > 0 && g->frozen.valid && !g->lost
+	    && rbsm::frozenDrift(g->frozen, relPose, A.circumradius, B.circumradius) <= updateTolerance * minSize) {
+		c                  = rbsm::frozenContact(g->frozen, relPose);
+		const Real inReach = -(maxSeparation + 1e-12 * minSize);
+		frozen             = c.d0 >= inReach && c.d1 >= inReach;
 	}
-	if (g) g->lost = false;
+	if (!frozen) {
+		rbsm::Vec2              stackA[2 * kStackVertices], stackB[2 * kStackVertices];
+		std::vector<rbsm::Vec2> heapA, heapB;
+		const rbsm::PolygonView va = ownFramePolygon(A, stackA, heapA);
+		const rbsm::PolygonView vb = placedPolygon(B, rel, relCos, relSin, stackB, heapB);
+
+		rbsm::ContactHint hint;
+		if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
+		const rbsm::BlockPose poseA { Vector2r::Zero(), 1, 0, A.circumradius }; // block 1's frame
+		const rbsm::BlockPose poseB { rel, relCos, relSin, B.circumradius };
+		rbsm::SearchMemory    newMemory; // a new contact's first search; kept in the geometry if it is made
+		rbsm::SearchMemory&   memory = g ? g->searchMemory : newMemory;
+		c                            = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, minSize, &poseA, &poseB, &memory);
+		if (!existing && !(c.touching && c.length > 0)) return false; // no new contact
+		if (existing && !c.touching) {
+			// The blocks of an existing joint no longer face each other within reach: YADE expects the
+			// law, not the geometry, to end an interaction, so the joint is handed over as lost.
+			g->lost         = true;
+			g->separation   = c.separation;
+			g->frozen.valid = false;
+			return true;
+		}
+		if (!g) {
+			auto geom = shared_ptr<RbsmGeom>(new RbsmGeom);
+			rbsm::integrationPoints(nIP, geom->positions, geom->weights);
+			geom->thickness    = std::min(A.thickness, B.thickness);
+			geom->reducedMass  = reducedMass(state1, state2);
+			geom->searchMemory = newMemory;
+			I->geom            = geom;
+			g                  = geom.get();
+		}
+		if (updateTolerance > 0) g->frozen = rbsm::freezeContact(c, relPose);
+		else g->frozen.valid = false;
+		g->frozenSteps = 0;
+	} else
+		g->frozenSteps++;
+	g->lost = false;
 	// back to the world frame: x ↦ x1 + R(θ1) x for points, R(θ1) for directions
 	auto toWorldDir   = [&](const Vector2r& v) { return Vector2r(cos1 * v.x() - sin1 * v.y(), sin1 * v.x() + cos1 * v.y()); };
 	c.normal          = toWorldDir(c.normal);
@@ -160,15 +196,6 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	c.p0              = state1.pos.head<2>() + toWorldDir(c.p0);
 	c.p1              = state1.pos.head<2>() + toWorldDir(c.p1);
 
-	if (!g) {
-		auto geom = shared_ptr<RbsmGeom>(new RbsmGeom);
-		rbsm::integrationPoints(nIP, geom->positions, geom->weights);
-		geom->thickness   = std::min(A.thickness, B.thickness);
-		geom->reducedMass = reducedMass(state1, state2);
-		geom->searchMemory = newMemory;
-		I->geom           = geom;
-		g                 = geom.get();
-	}
 	g->normal     = c.normal;
 	g->tangent    = c.tangent;
 	g->p0         = c.p0;

@@ -29,7 +29,8 @@ public:
 		"an existing one is kept (also open, in tension) until the law removes it.",
 		((int, nIP, 2, Attr::triggerPostLoad, "Integration points per contact (1-8, Gauss-Legendre). 2 integrates the force and moment of the linear traction of two rigid blocks exactly; more points resolve partial slip and partial opening along a joint."))
 		((Real, interactionDistance, 0, Attr::triggerPostLoad, "Largest gap [m] at which a new contact is made (0: touching or overlapping)."))
-		((Real, hysteresis, 1e-6, Attr::triggerPostLoad, "Relative margin (fraction of the smaller block size) by which another edge must be better before the reference edge of a contact changes; avoids flip-flopping between the two sides of a shared edge. It must stay well below overlap/size, or a contact keeps an edge that no longer faces the other block.")),
+		((Real, hysteresis, 1e-6, Attr::triggerPostLoad, "Relative margin (fraction of the smaller block size) by which another edge must be better before the reference edge of a contact changes; avoids flip-flopping between the two sides of a shared edge. It must stay well below overlap/size, or a contact keeps an edge that no longer faces the other block."))
+		((Real, updateTolerance, 0, Attr::triggerPostLoad, "Trade of accuracy for speed (dimensionless, fraction of the smaller block's diameter). 0 (default): the exact contact geometry (search and clipping) at every step. > 0: while the two blocks of a closed joint have moved relative to each other by less than updateTolerance × diameter since its last exact update, the joint follows its contact segment as material points of the two blocks (Kawai's small-displacement kinematics, pkg/rbsm/kernel/FrozenContact.hpp): overlap errors O(tol²·size), contact length within tol·size of the exact one; opening joints (an overlap ≤ 0 at an end) and larger motions get the exact geometry. Measured trade in docs/benchmarks.md.")),
 		/*ctor*/,
 		/*py*/
 	);

@@ -2,6 +2,7 @@
 #pragma once
 #include <core/IGeom.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
+#include <pkg/rbsm/kernel/FrozenContact.hpp>
 
 namespace yade {
 
@@ -29,7 +30,7 @@ public:
 		((Real, thickness, 1, Attr::readonly, "Out-of-plane thickness of the joint [m]: the smaller of the two blocks' thickness."))
 		((Real, h1, 0, Attr::readonly, "Distance from block 1's centroid to the contact line [m] (Kawai's h1)."))
 		((Real, h2, 0, Attr::readonly, "Distance from block 2's centroid to the contact line [m] (Kawai's h2)."))
-		((Real, separation, 0, Attr::readonly, "Largest separation between the blocks (separating-axis search) [m]; < 0 when they overlap."))
+		((Real, separation, 0, Attr::readonly, "Largest separation between the blocks (separating-axis search) [m]; < 0 when they overlap. In a step with frozen kinematics (Ig2's updateTolerance) minus the larger overlap at the segment's ends."))
 		((Real, reducedMass, 0, Attr::readonly, "m1·m2/(m1+m2) of the two blocks [kg] (a fixed block counts as infinite mass); used by contact damping."))
 		((int, refBody, 0, Attr::readonly, "Which block holds the reference edge (1 or 2); kept from step to step unless another edge is clearly better."))
 		((int, refEdge, -1, Attr::readonly, "Index of the reference edge (vertex i → i+1) on that block."))
@@ -39,6 +40,7 @@ public:
 		((std::vector<Real>, shearIncrement, , (Attr::readonly | Attr::noSave), "Tangential relative displacement Δus_k of this step at each point [m]."))
 		((std::vector<Real>, normalVelocity, , (Attr::readonly | Attr::noSave), "Relative normal velocity at each point [m/s] (> 0 closing)."))
 		((std::vector<Real>, shearVelocity, , (Attr::readonly | Attr::noSave), "Relative tangential velocity at each point [m/s]."))
+		((int, frozenSteps, 0, (Attr::readonly | Attr::noSave), "Steps since the contact geometry was last computed exactly (0: exact at this step). Above 0 only with :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance` > 0, while the joint is followed as material points."))
 		((bool, lost, false, (Attr::readonly | Attr::noSave), "The blocks of this joint no longer face each other within reach (the facing edge clipped away, or separated beyond what intact springs can hold): the law breaks every point and removes the joint."))
 		((Vector2r, centroid1, Vector2r::Zero(), (Attr::readonly | Attr::noSave), "Centroid of block 1 at this step [m]."))
 		((Vector2r, centroid2, Vector2r::Zero(), (Attr::readonly | Attr::noSave), "Centroid of block 2 at this step [m].")),
@@ -51,6 +53,9 @@ public:
 	/// next steps skip the search while it provably would choose the same edge. Not saved: after a
 	/// load the first step searches in full, with the same result.
 	rbsm::SearchMemory searchMemory;
+	/// The contact as material points at its last exact update (Ig2's updateTolerance > 0 only;
+	/// rbsm::FrozenContact). Not saved: after a load the first step is exact.
+	rbsm::FrozenContact frozen;
 	size_t   nPoints() const { return weights.size(); }
 	REGISTER_CLASS_INDEX(RbsmGeom, IGeom);
 };

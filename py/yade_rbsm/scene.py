@@ -5,7 +5,7 @@ __all__ = ["engines", "critical_time_step"]
 
 
 def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, set_dt=True, interval=100, enlarge=0.0,
-            verlet_dist=None):
+            verlet_dist=None, update_tolerance=0.0):
     """YADE's simulation loop for RBSM blocks, to assign to O.engines (and edit if needed)::
 
         ForceResetter
@@ -19,6 +19,9 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     *damping* is NewtonIntegrator's non-viscous (Cundall) damping, for quasi-static stages;
     *contact_damping* the viscous damping ratio of the joints; *set_dt*: the time stepper sets O.dt
     to safety × critical step (True) or refuses a larger O.dt (False).
+    *update_tolerance*: Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance, 0 for the exact contact
+    geometry at every step, e.g. 1e-4 to follow closed joints as material points between exact
+    updates (faster, overlap error O(tol²·size); docs/benchmarks.md measures the trade).
     *verlet_dist*: the collider's verletDist [m]; by default 1 % of the smallest block already in
     O.bodies (YADE's automatic value is for spheres and becomes 0 without them, which re-sorts the
     bounds at every step: 9 % of the step of a brick wall, docs/benchmarks.md).
@@ -33,7 +36,7 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
         wrapper.ForceResetter(),
         collider,
         wrapper.InteractionLoop(
-            [wrapper.Ig2_Polygon2D_Polygon2D_RbsmGeom(nIP=nIP, label="ig2")],
+            [wrapper.Ig2_Polygon2D_Polygon2D_RbsmGeom(nIP=nIP, updateTolerance=update_tolerance, label="ig2")],
             [wrapper.Ip2_RbsmMat_RbsmMat_RbsmPhys(label="ip2")],
             [wrapper.Law2_RbsmGeom_RbsmPhys_MohrCoulomb(dampingRatio=contact_damping, label="law")],
         ),

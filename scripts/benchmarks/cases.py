@@ -48,8 +48,8 @@ def emit(res):
 class Method:
     """Materials, blocks, ground and engines of one method."""
 
-    def __init__(self, name, phi, nIP=2, safety=0.8, contact_damping=0.3, verlet=None, interval=100):
-        self.name, self.phi = name, phi
+    def __init__(self, name, phi, nIP=2, safety=0.8, contact_damping=0.3, verlet=None, interval=100, update_tol=0.0):
+        self.name, self.phi, self.update_tol = name, phi, update_tol
         self.nIP, self.safety, self.cdamp, self.verlet, self.interval = nIP, safety, contact_damping, verlet, interval
         if name == "rbsm":
             self.mat = wrapper.RbsmMat(young=E, poisson=0.2, density=RHO, frictionAngle=phi, cohesion=0, tensileStrength=0)
@@ -147,7 +147,7 @@ class Method:
             return
         if m == "rbsm":
             eng = rbsm_engines(gravity=gravity, damping=damping, contact_damping=self.cdamp, nIP=self.nIP,
-                               safety=self.safety, set_dt=True, interval=self.interval)
+                               safety=self.safety, set_dt=True, interval=self.interval, update_tolerance=self.update_tol)
             if self.verlet is not None:
                 eng[1].verletDist = self.verlet
             O.engines = eng
@@ -486,7 +486,7 @@ def wall_sim(method, nx=50, ny=50, T=0.05, max_steps=2000, **kw):
 
 def main():
     case, method = P.get("case"), P.get("method", "rbsm")
-    kw = {k: P[k] for k in ("nIP", "safety", "contact_damping", "verlet", "interval") if k in P}
+    kw = {k: P[k] for k in ("nIP", "safety", "contact_damping", "verlet", "interval", "update_tol") if k in P}
     t0 = time.perf_counter()
     if case == "incline":
         r = incline(method, **{k: P[k] for k in ("psi_deg", "phi_deg", "T") if k in P}, **kw)

@@ -24,3 +24,20 @@ def lsq_slope(t, v):
     n = len(t)
     mt, mv = sum(t) / n, sum(v) / n
     return sum((a - mt) * (b - mv) for a, b in zip(t, v)) / sum((a - mt) ** 2 for a in t)
+
+
+class FrozenShare:
+    """Share of the contact-steps that used frozen kinematics (RbsmGeom.frozenSteps > 0, i.e.
+    Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance > 0): call sample(O) after each step."""
+
+    def __init__(self):
+        self.frozen = self.total = 0
+
+    def sample(self, O):
+        for i in O.interactions:
+            if i.isReal:
+                self.total += 1
+                self.frozen += i.geom.frozenSteps > 0
+
+    def share(self):
+        return self.frozen / self.total if self.total else 0.0

@@ -7,7 +7,7 @@ mode 'tension': a fixed block and a kinematic block (thickness t) pulled apart a
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from math import pi, cos, sqrt
-from _common import params, emit
+from _common import params, emit, FrozenShare
 from yade_rbsm import polygon2d
 
 p = params()
@@ -15,7 +15,7 @@ E, nu, rho = p.get("E", 1e8), p.get("nu", 0.2), p.get("rho", 2000.0)
 mode = p.get("mode", "mode1")
 ip2 = Ip2_RbsmMat_RbsmMat_RbsmPhys(setCohesionNow=True)
 O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polygon2D_Aabb(enlarge=0.01)]),
-             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom(interactionDistance=1e-9)], [ip2],
+             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom(interactionDistance=1e-9, updateTolerance=p.get("ut", 0.0))], [ip2],
                              [Law2_RbsmGeom_RbsmPhys_MohrCoulomb()]),
              NewtonIntegrator(gravity=(0, 0, 0), damping=0)]
 
@@ -31,9 +31,10 @@ if mode == "mode1":
     m, kn_l = O.bodies[0].state.mass, None
     O.dt = p.get("dt", 2e-4)
     crossings, prev = [], O.bodies[0].state.vel[0]
-    nsteps = p.get("steps", 6000)
+    nsteps, fz = p.get("steps", 6000), FrozenShare()
     for k in range(nsteps):
         O.step()
+        fz.sample(O)
         if k == 0:
             i0 = O.interactions[ids[0], ids[1]]
             kn_l = i0.phys.kn * i0.geom.length * i0.geom.thickness
@@ -42,7 +43,7 @@ if mode == "mode1":
             crossings.append(O.time - O.dt * v / (v - prev))   # linear interpolation within the step
         prev = v
     emit({"crossings": crossings, "L": L, "mass": m, "kn_l": kn_l, "n_inter": sum(1 for i in O.interactions if i.isReal),
-          "n_intact": sum(1 for i in O.interactions if i.isReal and i.phys.nIntact == len(i.phys.intactPoints))})
+          "frozen_share": fz.share(), "n_intact": sum(1 for i in O.interactions if i.isReal and i.phys.nIntact == len(i.phys.intactPoints))})
 else:
     t, st, v = p.get("thickness", 0.5), p.get("sigmaT", 1e5), p.get("speed", 1e-2)
     mat = RbsmMat(young=E, poisson=nu, density=rho, planeStrain=False, cohesion=2 * st, tensileStrength=st,

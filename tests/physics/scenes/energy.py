@@ -9,7 +9,7 @@ mode 'friction': a 1 x 0.5 block settles on a fixed floor (φ, g = 9.81, contact
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from math import radians
-from _common import params, emit, kinetic_energy
+from _common import params, emit, kinetic_energy, FrozenShare
 from yade_rbsm import polygon2d
 
 p = params()
@@ -24,25 +24,26 @@ if mode == "impact":
     O.bodies[A].state.vel = (v0, 0, 0)
     O.bodies[B].state.vel = (-v0, 0, 0)
     O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polygon2D_Aabb(enlarge=0.01)]),
-                 InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom()], [Ip2_RbsmMat_RbsmMat_RbsmPhys()],
+                 InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom(updateTolerance=p.get("ut", 0.0))], [Ip2_RbsmMat_RbsmMat_RbsmPhys()],
                                  [Law2_RbsmGeom_RbsmPhys_MohrCoulomb()]),
                  NewtonIntegrator(gravity=(0, 0, 0), damping=0)]
     O.dt = p.get("dt", 1e-5)
-    ke, el, contact = [], [], []
+    ke, el, contact, fz = [], [], [], FrozenShare()
     for k in range(p.get("steps", 3000)):
         O.step()
+        fz.sample(O)
         ke.append(kinetic_energy(O))
         el.append(O.energy["elastPotential"] if "elastPotential" in O.energy.keys() else 0.0)
         contact.append(O.interactions.has(A, B) and O.interactions[A, B].isReal)
     emit({"ke": ke, "el": el, "contact": contact, "vA": O.bodies[A].state.vel[0], "vB": O.bodies[B].state.vel[0],
-          "E0": 2 * 0.5 * O.bodies[A].state.mass * v0 ** 2})
+          "E0": 2 * 0.5 * O.bodies[A].state.mass * v0 ** 2, "frozen_share": fz.share()})
 else:
     mat = RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=radians(p.get("phi", 30)))
     O.materials.append(mat)
     O.bodies.append(polygon2d([(-20, -1), (20, -1), (20, 0), (-20, 0)], mat, fixed=True))
     b = O.bodies[O.bodies.append(polygon2d([(0, 0), (1, 0), (1, 0.5), (0, 0.5)], mat))]
     O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polygon2D_Aabb(enlarge=0.01)]),
-                 InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom()], [Ip2_RbsmMat_RbsmMat_RbsmPhys()],
+                 InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom(updateTolerance=p.get("ut", 0.0))], [Ip2_RbsmMat_RbsmMat_RbsmPhys()],
                                  [Law2_RbsmGeom_RbsmPhys_MohrCoulomb(dampingRatio=p.get("xi", 0.3))]),
                  NewtonIntegrator(gravity=(0, -9.81, 0), damping=0)]
     O.dt = p.get("dt", 1e-5)
@@ -58,12 +59,14 @@ else:
     y0 = b.state.pos[1]
     law = O.engines[2].lawDispatcher.functors[0]
     law.dampingRatio = p.get("xi_slide", law.dampingRatio)
-    ratio = 0.0                     # largest |tangential| / normal contact force on the block
+    ratio, fz = 0.0, FrozenShare()  # largest |tangential| / normal contact force on the block
     for k in range(200):
         O.step()
+        fz.sample(O)
         f = O.forces.f(b.id)
         ratio = max(ratio, abs(f[0]) / max(abs(f[1]), 1e-300))
     O.run(p.get("steps", 30000) - 200, True)
     emit({"ke_lost": ke0 - kinetic_energy(O), "ke0": ke0, "ke_end": kinetic_energy(O),
           "d": {k: en(k) - e0[k] for k in e0}, "dist": b.state.pos[0] - x0, "mass": b.state.mass,
-          "grav_work": b.state.mass * 9.81 * (y0 - b.state.pos[1]), "vel_end": b.state.vel[0], "max_ft_over_fn": ratio})
+          "grav_work": b.state.mass * 9.81 * (y0 - b.state.pos[1]), "vel_end": b.state.vel[0], "max_ft_over_fn": ratio,
+          "frozen_share": fz.share()})

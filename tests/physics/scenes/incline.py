@@ -8,7 +8,7 @@ params: psi (deg), phi (deg), c (Pa, bonded joint if > 0), L, H, dt, mode:
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from math import radians, degrees, sin, cos
-from _common import params, emit, lsq_slope
+from _common import params, emit, lsq_slope, FrozenShare
 from yade_rbsm import polygon2d
 
 p = params()
@@ -22,7 +22,7 @@ b = O.bodies[O.bodies.append(polygon2d([(0, 0), (L, 0), (L, H), (0, H)], mat))]
 ip2 = Ip2_RbsmMat_RbsmMat_RbsmPhys(setCohesionNow=(c > 0))
 newton = NewtonIntegrator(gravity=(0, -g, 0), damping=0)
 O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polygon2D_Aabb()]),
-             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom()], [ip2], [Law2_RbsmGeom_RbsmPhys_MohrCoulomb(dampingRatio=0.3)]),
+             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom(updateTolerance=p.get("ut", 0.0))], [ip2], [Law2_RbsmGeom_RbsmPhys_MohrCoulomb(dampingRatio=0.3)]),
              newton]
 O.dt = p.get("dt", 1e-5)
 x0 = b.state.pos[0]
@@ -36,14 +36,15 @@ def phys():
 if mode == "sudden":
     newton.gravity = (g * sin(psi), -g * cos(psi), 0)
     n = p.get("steps", 20000)
-    ts, vs = [], []
+    ts, vs, fz = [], [], FrozenShare()
     for k in range(n):
         O.step()
+        fz.sample(O)
         if k >= n // 2 and k % 10 == 0:
             ts.append(O.time)
             vs.append(b.state.vel[0])
     emit({"a": lsq_slope(ts, vs), "a_mean": b.state.vel[0] / O.time, "disp": b.state.pos[0] - x0,
-          "mass": b.state.mass})
+          "mass": b.state.mass, "frozen_share": fz.share()})
 else:
     O.run(p.get("settle", 20000), True)
     x0 = b.state.pos[0]

@@ -23,7 +23,7 @@ O.bodies[S].state.vel = (0.02, 0.0, 0)
 O.bodies[T].state.vel = (-0.05, -0.03, 0)
 O.bodies[T].state.angVel = (0, 0, 0.2)
 O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polygon2D_Aabb(enlarge=0.01)]),
-             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom()], [Ip2_RbsmMat_RbsmMat_RbsmPhys()],
+             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom(updateTolerance=p.get("ut", 0.0))], [Ip2_RbsmMat_RbsmMat_RbsmPhys()],
                              [Law2_RbsmGeom_RbsmPhys_MohrCoulomb()]),
              NewtonIntegrator(gravity=(0, 0, 0), damping=0)]
 O.dt = 1e-5

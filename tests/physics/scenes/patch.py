@@ -23,7 +23,7 @@ for i in range(nx):
         bid = O.bodies.append(polygon2d([(x0, y0), (x0 + a, y0), (x0 + a, y0 + a), (x0, y0 + a)], mat))
         ref[bid] = (x0 + a / 2, y0 + a / 2)
 O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polygon2D_Aabb(enlarge=0.01 * a)]),
-             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom(interactionDistance=1e-6 * a)],
+             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom(interactionDistance=1e-6 * a, updateTolerance=p.get("ut", 0.0))],
                              [Ip2_RbsmMat_RbsmMat_RbsmPhys(setCohesionNow=True)],
                              [Law2_RbsmGeom_RbsmPhys_MohrCoulomb()])]
 O.dt = 1e-3

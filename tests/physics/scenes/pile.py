@@ -23,7 +23,7 @@ for row in range(6):
         pts = [(-0.27, -0.2), (0.27, -0.2 + rng.uniform(-0.03, 0.03)), (0.25, 0.2), (-0.26, 0.19)]
         ids.append(O.bodies.append(polygon2d([(cx + x * cos(a) - y * sin(a), cy + x * sin(a) + y * cos(a)) for x, y in pts], mat)))
 O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polygon2D_Aabb(enlarge=0.01)]),
-             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom()], [Ip2_RbsmMat_RbsmMat_RbsmPhys()],
+             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom(updateTolerance=p.get("ut", 0.0))], [Ip2_RbsmMat_RbsmMat_RbsmPhys()],
                              [Law2_RbsmGeom_RbsmPhys_MohrCoulomb(dampingRatio=0.1)]),
              NewtonIntegrator(gravity=(0, -9.81, 0), damping=0)]
 O.dt = p.get("dt", 1e-4)

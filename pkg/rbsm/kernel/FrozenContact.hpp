@@ -1,0 +1,125 @@
+// Frozen contact kinematics: an opt-in trade of accuracy for speed between exact updates of the
+// edge-to-edge contact (EdgeContact.hpp).
+//
+// The exact contact (separating-axis search, clipping) is recomputed from the blocks' shapes at
+// every step. Between two steps of a resting or slowly moving joint it barely changes, so the
+// plugin may instead, while the two blocks have moved relative to each other by less than a
+// tolerance since the last exact update, follow the contact segment as material points:
+//
+//   * p0, p1  the segment's ends on the reference line, fixed in the REFERENCE block
+//             (the block that holds the reference edge), with its outward normal nRef;
+//   * q0, q1  their partners on the incident block at the update, q = p − d nRef (d the overlap
+//             there), fixed in the INCIDENT block.
+//
+// After rigid motions of the two blocks the overlaps are the distances of q behind the moved
+// reference line, d_i = −nRef·(q_i − p_i) (seed eq. (8) for the material point q_i), and the
+// segment p0 → p1 moves with the reference block. This is the classical small-displacement RBSM
+// kinematics of Kawai (relative displacement of two material points that coincided), with the
+// geometry refreshed whenever the motion grows.
+//
+// Error against the exact contact. A pure approach along the normal is reproduced exactly (to
+// round-off). A relative rotation α and tangential slip s since the update change the overlap at
+// the material points only at second order: the exact contact measures the overlap where the
+// incident edge crosses the normal through the integration point, the frozen one at the material
+// point that has slipped by s along an edge tilted by α, |Δd| ≲ |α| s + α² L; the segment ends
+// lag behind the exact ones by at most s (its length is the one of the update). With the motion
+// bounded by tol·size (frozenDrift below), the overlap error is O(tol²·size) and the contact
+// length error O(tol·size). Unit tests: tests/unit/test_frozen_contact.cpp.
+//
+// Frames: everything is computed in block A's (body 1's) frame, where B has the relative pose
+// (r, cos, sin) of RelativePose. Units: metres.
+#pragma once
+
+#include <pkg/rbsm/kernel/EdgeContact.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rbsm {
+
+/// Pose of block B relative to block A: B's centroid in A's frame, cos and sin of θB − θA.
+struct RelativePose {
+	Vec2 r = Vec2::Zero();
+	Real cos = 1, sin = 0;
+	Vec2 toA(const Vec2& xiB) const { return Vec2(r.x() + cos * xiB.x() - sin * xiB.y(), r.y() + sin * xiB.x() + cos * xiB.y()); }
+	Vec2 dirToA(const Vec2& vB) const { return Vec2(cos * vB.x() - sin * vB.y(), sin * vB.x() + cos * vB.y()); }
+	Vec2 toB(const Vec2& xA) const
+	{
+		const Vec2 d = xA - r;
+		return Vec2(cos * d.x() + sin * d.y(), -sin * d.x() + cos * d.y());
+	}
+	Vec2 dirToB(const Vec2& vA) const { return Vec2(cos * vA.x() + sin * vA.y(), -sin * vA.x() + cos * vA.y()); }
+};
+
+/// The material points of a contact at its last exact update (see above).
+struct FrozenContact {
+	bool         valid   = false;
+	int          refBody = 0; ///< 1: the reference edge is A's, 2: B's
+	int          refEdge = -1;
+	Vec2         nRef    = Vec2::Zero(); ///< outward normal of the reference edge, reference block's frame
+	Vec2         p0 = Vec2::Zero(), p1 = Vec2::Zero(); ///< segment ends, reference block's frame
+	Vec2         q0 = Vec2::Zero(), q1 = Vec2::Zero(); ///< their partners, incident block's frame
+	Real         length = 0;                           ///< |p1 − p0| (rigid: unchanged)
+	RelativePose pose;                                 ///< B relative to A at the update
+};
+
+/// Freezes the exact contact c (A's frame, from edgeContact) of blocks at relative pose `pose`.
+inline FrozenContact freezeContact(const EdgeContact& c, const RelativePose& pose)
+{
+	FrozenContact f;
+	if (!c.touching || (c.refBody != 1 && c.refBody != 2)) return f;
+	const Vec2 nRef = c.refBody == 1 ? c.normal : Vec2(-c.normal);
+	const Vec2 q0 = c.p0 - c.d0 * nRef, q1 = c.p1 - c.d1 * nRef; // incident points, A's frame
+	f.refBody = c.refBody;
+	f.refEdge = c.refEdge;
+	f.length  = c.length;
+	f.pose    = pose;
+	if (c.refBody == 1) {
+		f.nRef = nRef, f.p0 = c.p0, f.p1 = c.p1;
+		f.q0 = pose.toB(q0), f.q1 = pose.toB(q1);
+	} else {
+		f.nRef = pose.dirToB(nRef), f.p0 = pose.toB(c.p0), f.p1 = pose.toB(c.p1);
+		f.q0 = q0, f.q1 = q1;
+	}
+	f.valid = true;
+	return f;
+}
+
+/// Upper bound (L1 norms, m) of how far any point of either block has moved relative to the other
+/// since the update: |Δr| + χ (R_A + R_B + |r|), χ the chord of the relative rotation (the same
+/// bound as edgeContact's coherence, EdgeContact.hpp). radiusA, radiusB: circumradii (m).
+inline Real frozenDrift(const FrozenContact& f, const RelativePose& now, Real radiusA, Real radiusB)
+{
+	const Real chord = std::abs(now.cos - f.pose.cos) + std::abs(now.sin - f.pose.sin);
+	const Vec2 dr    = now.r - f.pose.r;
+	return std::abs(dr.x()) + std::abs(dr.y()) + chord * (radiusA + radiusB + std::abs(f.pose.r.x()) + std::abs(f.pose.r.y()));
+}
+
+/// The contact at relative pose `now` from the material points (A's frame; EdgeContact's fields
+/// and conventions; separation = −max(d0, d1), the deepest overlap of the segment's ends).
+inline EdgeContact frozenContact(const FrozenContact& f, const RelativePose& now)
+{
+	EdgeContact c;
+	Vec2        nRef, p0, p1, q0, q1;
+	if (f.refBody == 1) {
+		nRef = f.nRef, p0 = f.p0, p1 = f.p1;
+		q0 = now.toA(f.q0), q1 = now.toA(f.q1);
+	} else {
+		nRef = now.dirToA(f.nRef), p0 = now.toA(f.p0), p1 = now.toA(f.p1);
+		q0 = f.q0, q1 = f.q1;
+	}
+	c.d0         = -nRef.dot(q0 - p0);
+	c.d1         = -nRef.dot(q1 - p1);
+	c.normal     = f.refBody == 1 ? nRef : Vec2(-nRef);
+	c.tangent    = Vec2(-c.normal.y(), c.normal.x());
+	c.p0         = p0;
+	c.p1         = p1;
+	c.length     = f.length;
+	c.separation = -std::max(c.d0, c.d1);
+	c.refBody    = f.refBody;
+	c.refEdge    = f.refEdge;
+	c.touching   = true;
+	return c;
+}
+
+} // namespace rbsm
