@@ -133,13 +133,16 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	// New contacts need touch or closeness. An existing joint is followed while it opens as far
 	// as its intact springs can hold tension (σt/kn, doubled as margin) so that the law, not the
 	// geometry, breaks it. The same distance trims the facing edge to the part that touches.
-	Real maxSeparation = interactionDistance;
-	if (existing) {
-		// class index instead of dynamic_cast: this runs for every contact at every step
-		const IPhys* ip = I->phys.get();
-		const auto*  ph = (ip && ip->getClassIndex() == RbsmPhys::getClassIndexStatic()) ? static_cast<const RbsmPhys*>(ip) : nullptr;
-		if (ph && ph->kn > 0 && ph->tensileStrength > 0 && ph->nIntact() > 0) maxSeparation += 2 * ph->tensileStrength / ph->kn;
-	}
+	auto reach = [&]() {
+		Real maxSeparation = interactionDistance;
+		if (existing) {
+			// class index instead of dynamic_cast: this runs for every contact at every step
+			const IPhys* ip = I->phys.get();
+			const auto*  ph = (ip && ip->getClassIndex() == RbsmPhys::getClassIndexStatic()) ? static_cast<const RbsmPhys*>(ip) : nullptr;
+			if (ph && ph->kn > 0 && ph->tensileStrength > 0 && ph->nIntact() > 0) maxSeparation += 2 * ph->tensileStrength / ph->kn;
+		}
+		return maxSeparation;
+	};
 
 	// Frozen kinematics (updateTolerance > 0): a joint that has moved little since its last exact
 	// update is followed as material points, without search or clipping, as long as the exact
@@ -148,9 +151,9 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	bool frozen = false;
 	if (g && updateTolerance > 0 && g->frozen.valid && !g->lost
 	    && rbsm::frozenDrift(g->frozen, relPose, A.circumradius, B.circumradius) <= updateTolerance * minSize) {
-		c                  = rbsm::frozenContact(g->frozen, relPose);
-		const Real inReach = -(maxSeparation + 1e-12 * minSize);
-		frozen             = c.d0 >= inReach && c.d1 >= inReach;
+		c                = rbsm::frozenContact(g->frozen, relPose);
+		const Real slop  = 1e-12 * minSize, dMin = std::min(c.d0, c.d1);
+		frozen           = dMin >= -slop || dMin >= -(reach() + slop); // (reach() ≥ 0: only asked for an opening joint)
 	}
 	if (!frozen) {
 		rbsm::Vec2              stackA[2 * kStackVertices], stackB[2 * kStackVertices];
@@ -158,6 +161,9 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		const rbsm::PolygonView va = ownFramePolygon(A, stackA, heapA);
 		const rbsm::PolygonView vb = placedPolygon(B, rel, relCos, relSin, stackB, heapB);
 
+		const Real maxSeparation = reach();
+		// a potential interaction (bounding boxes overlap) whose blocks are clearly apart: no search
+		if (!g && rbsm::separatedBeyond(va, vb, maxSeparation, minSize)) return false;
 		rbsm::ContactHint hint;
 		if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
 		const rbsm::BlockPose poseA { Vector2r::Zero(), 1, 0, A.circumradius }; // block 1's frame
@@ -192,7 +198,7 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	// back to the world frame: x ↦ x1 + R(θ1) x for points, R(θ1) for directions
 	auto toWorldDir   = [&](const Vector2r& v) { return Vector2r(cos1 * v.x() - sin1 * v.y(), sin1 * v.x() + cos1 * v.y()); };
 	c.normal          = toWorldDir(c.normal);
-	c.tangent         = toWorldDir(c.tangent);
+	c.tangent         = Vector2r(-c.normal.y(), c.normal.x()); // = R(θ1) of the frame's tangent, bit for bit
 	c.p0              = state1.pos.head<2>() + toWorldDir(c.p0);
 	c.p1              = state1.pos.head<2>() + toWorldDir(c.p1);
 

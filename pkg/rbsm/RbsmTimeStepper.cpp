@@ -1,7 +1,6 @@
 #include <pkg/rbsm/RbsmGeom.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
 #include <pkg/rbsm/RbsmTimeStepper.hpp>
-#include <pkg/rbsm/kernel/CriticalTimeStep.hpp>
 #include <core/Scene.hpp>
 
 #include <sstream>
@@ -13,29 +12,32 @@ YADE_PLUGIN((RbsmTimeStepper));
 Real RbsmTimeStepper::estimate()
 {
 	const auto& bodies = scene->bodies->body;
-	std::vector<rbsm::DynBody> dyn;
-	std::vector<int>           index(bodies.size(), -1); // body id -> index in dyn
-	std::vector<rbsm::DynContact> contacts;
-	std::vector<Real>             dashpot, spring; // per block: Σ c·A [N·s/m] and Σ min(kn, ks)·A [N/m] of its joints
+	dynBodies.clear();
+	dynIndex.assign(bodies.size(), -1); // body id -> index in dynBodies
+	dashpot.clear(), spring.clear();    // per block: Σ c·A [N·s/m] and Σ min(kn, ks)·A [N/m] of its joints
+	size_t nContacts = 0;
 	for (const auto& I : *scene->interactions) {
 		if (!I->isReal()) continue;
-		const auto* g = dynamic_cast<const RbsmGeom*>(I->geom.get());
-		const auto* p = dynamic_cast<const RbsmPhys*>(I->phys.get());
-		if (!g || !p) continue;
-		int ends[2];
+		// class indices instead of dynamic_cast (once per contact per check)
+		const IGeom* ig = I->geom.get();
+		const IPhys* ip = I->phys.get();
+		if (!ig || !ip || ig->getClassIndex() != RbsmGeom::getClassIndexStatic() || ip->getClassIndex() != RbsmPhys::getClassIndexStatic()) continue;
+		const auto* g = static_cast<const RbsmGeom*>(ig);
+		const auto* p = static_cast<const RbsmPhys*>(ip);
+		int         ends[2];
 		for (int side = 0; side < 2; side++) {
 			const Body::id_t id = side == 0 ? I->getId1() : I->getId2();
-			if (index[id] < 0) {
-				const State& s = *bodies[id]->state;
+			if (dynIndex[id] < 0) {
+				const State&  s = *bodies[id]->state;
 				rbsm::DynBody b;
-				b.mass     = s.mass;
-				b.inertia  = s.inertia.z();
-				b.centroid = s.pos.head<2>();
-				b.fixed    = (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL;
-				index[id]  = int(dyn.size());
-				dyn.push_back(b);
+				b.mass       = s.mass;
+				b.inertia    = s.inertia.z();
+				b.centroid   = s.pos.head<2>();
+				b.fixed      = (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL;
+				dynIndex[id] = int(dynBodies.size());
+				dynBodies.push_back(b);
 			}
-			ends[side] = index[id];
+			ends[side] = dynIndex[id];
 		}
 		// viscous joint damping: dashpot and (softer) spring of the joint, summed per block (see below)
 		if (p->dampingCoefficient > 0) {
@@ -46,21 +48,23 @@ Real RbsmTimeStepper::estimate()
 				spring[e] += std::min(p->kn, p->ks) * area;
 			}
 		}
-		rbsm::DynContact c;
-		c.body1   = ends[0];
-		c.body2   = ends[1];
-		c.normal  = g->normal;
-		c.tangent = g->tangent;
-		c.kn      = p->kn;
-		c.ks      = p->ks;
+		if (dynContacts.size() <= nContacts) dynContacts.emplace_back();
+		rbsm::DynContact& c = dynContacts[nContacts++];
+		c.body1             = ends[0];
+		c.body2             = ends[1];
+		c.normal            = g->normal;
+		c.tangent           = g->tangent;
+		c.kn                = p->kn;
+		c.ks                = p->ks;
+		c.points.clear(), c.areas.clear(); // (their capacity is kept)
 		for (size_t k = 0; k < g->nPoints(); k++) {
 			c.points.push_back(g->point(int(k)));
 			c.areas.push_back(g->weights[k] * g->length * g->thickness);
 		}
-		contacts.push_back(std::move(c));
 	}
+	dynContacts.resize(nContacts);
 	std::vector<Real> omega2; // Gershgorin bound of each block's rows
-	const Real        undamped = rbsm::criticalTimeStepGershgorin(dyn, contacts, &omega2);
+	const Real        undamped = rbsm::criticalTimeStepGershgorin(dynBodies, dynContacts, &omega2);
 	// Joint dashpots (Law2's dampingRatio) lower the limit of the central-difference scheme, whose
 	// velocity is half a step behind: dt ≤ (2/ω)(√(1+ξ²) − ξ) for a mode of frequency ω and damping
 	// ratio ξ. Every eigenvalue lies below the Gershgorin bound ω̂_b² of some block b; for that block

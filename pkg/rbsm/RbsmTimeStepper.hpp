@@ -1,6 +1,7 @@
 // RbsmTimeStepper: the stability limit of the explicit integration of an RBSM block system.
 #pragma once
 #include <core/GlobalEngine.hpp>
+#include <pkg/rbsm/kernel/CriticalTimeStep.hpp>
 
 namespace yade {
 
@@ -30,7 +31,7 @@ public:
 		"O.dt > safetyFactor·dt_crit is refused with an error before anything moves.",
 		((Real, safetyFactor, 0.8, Attr::triggerPostLoad, "Fraction of the critical step allowed (0 < safetyFactor ≤ 1)."))
 		((bool, setDt, false, , "Set O.dt to safetyFactor·dt_crit (True) or only check it and refuse an unstable O.dt (False)."))
-		((int, interval, 100, Attr::triggerPostLoad, "Check every this many steps (the first step is always checked). One estimate costs about one InteractionLoop pass (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
+		((int, interval, 100, Attr::triggerPostLoad, "Check every this many steps (the first step is always checked). One estimate costs about one InteractionLoop pass of the exact geometry (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
 		((bool, dtWasSet, false, , "Whether this engine has set O.dt already; from then on it only lowers O.dt (a corner contact found at a check may stiffen before the next one)."))
 		((long, lastCheck, -1, Attr::readonly, "Step of the last check (saved with the scene, so that a loaded scene is checked on the same steps as an uninterrupted run)."))
 		((Real, criticalDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step found at the last check [s].")),
@@ -38,6 +39,13 @@ public:
 		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the current system [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
 	);
 	// clang-format on
+private:
+	// estimate()'s working arrays, kept between calls so that a check allocates nothing once the
+	// scene has grown (not saved; the engine runs on one thread)
+	std::vector<rbsm::DynBody>    dynBodies;
+	std::vector<int>              dynIndex;
+	std::vector<rbsm::DynContact> dynContacts;
+	std::vector<Real>             dashpot, spring;
 };
 REGISTER_SERIALIZABLE(RbsmTimeStepper);
 

@@ -380,3 +380,47 @@ TEST(EdgeContact, FuzzSeed1Pair0OverlapIsAChord)
 		expectChordsInBoth(c, order == 0 ? A : B, order == 0 ? B : A, 1e-12); // slop 1e-12 * 0.078
 	}
 }
+
+// separatedBeyond (the early rejection of potential interactions) must never reject a pair that
+// edgeContact finds touching, and must reject pairs that are apart by more than the slop: random
+// rectangles and rotated regular polygons at random poses, from deep overlap to clearly apart,
+// including exactly shared edges moved apart by tiny gaps.
+TEST(EdgeContact, SeparatedBeyondAgreesWithTheFullSearch)
+{
+	std::mt19937                         rng(11);
+	std::uniform_real_distribution<Real> u(0, 1);
+	auto                                 regular = [](int n, Real r) {
+                std::vector<Vec2> v;
+                for (int k = 0; k < n; ++k) v.push_back(r * Vec2(std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n)));
+                return v;
+	};
+	int rejected = 0, apart = 0;
+	for (int trial = 0; trial < 20000; ++trial) {
+		const std::vector<Vec2> a0 = trial % 2 ? rect(-0.5, -0.25, 1.0, 0.5) : regular(3 + trial % 5, 0.5);
+		const std::vector<Vec2> b0 = trial % 3 ? rect(-0.3, -0.2, 0.6, 0.4) : regular(3 + trial % 7, 0.4);
+		std::vector<Vec2>       A  = moved(a0, Vec2(u(rng), u(rng)), 2 * M_PI * u(rng));
+		std::vector<Vec2>       B;
+		if (trial % 4 == 0) { // B on top of a rectangle A, its bottom edge on A's top edge, lifted by a gap
+			A = rect(0, 0, 1, 0.5);
+			const Real gap = std::pow(10.0, -15 + 14 * u(rng)) * (u(rng) < 0.5 ? -1 : 1);
+			B = rect(u(rng) - 0.5, 0.5 + gap, 0.6, 0.4);
+		} else
+			B = moved(b0, Vec2(2.5 * u(rng) - 0.75, 2.5 * u(rng) - 0.75), 2 * M_PI * u(rng));
+		const std::vector<Vec2> nA = edgeNormals(A), nB = edgeNormals(B);
+		const PolygonView       va { A.data(), nA.data(), int(A.size()) }, vb { B.data(), nB.data(), int(B.size()) };
+		const Real              minSize = std::min(polygonSize(A), polygonSize(B)), maxSep = trial % 5 == 0 ? 1e-3 : 0.0;
+		const bool              rej     = separatedBeyond(va, vb, maxSep, minSize);
+		const EdgeContact       c       = edgeContact(va, vb, maxSep, nullptr, 1e-6, minSize);
+		if (rej) {
+			++rejected;
+			EXPECT_FALSE(c.touching) << "trial " << trial << " separation " << c.separation;
+		}
+		if (c.separation > maxSep + 2e-12 * minSize) {
+			++apart;
+			EXPECT_TRUE(rej) << "trial " << trial << ": apart by " << c.separation << " but not rejected";
+		}
+	}
+	EXPECT_GT(rejected, 5000); // the test must exercise both outcomes
+	EXPECT_LT(rejected, 15000);
+	EXPECT_EQ(rejected, apart);
+}

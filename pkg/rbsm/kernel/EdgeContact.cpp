@@ -390,6 +390,17 @@ EdgeContact edgeContact(
 	return c;
 }
 
+bool separatedBeyond(const PolygonView& A, const PolygonView& B, Real maxSeparation, Real minSize)
+{
+	if (A.n < 3 || B.n < 3) return false; // edgeContact decides (no contact)
+	const Real beyond = std::max(maxSeparation, Real(0)) + 2e-12 * minSize;
+	for (int i = 0; i < A.n; ++i)
+		if (edgeSeparation(A, i, B) > beyond) return true;
+	for (int i = 0; i < B.n; ++i)
+		if (edgeSeparation(B, i, A) > beyond) return true;
+	return false;
+}
+
 void integrationPoints(int nIP, std::vector<Real>& s, std::vector<Real>& w)
 {
 	if (nIP < 1 || nIP > 8) throw std::invalid_argument("integrationPoints: nIP must be in 1..8");

@@ -143,6 +143,14 @@ EdgeContact edgeContact(
         const BlockPose*   poseB  = nullptr,
         SearchMemory*      memory = nullptr);
 
+/// Cheap rejection of a pair that edgeContact would find apart: true if some edge of either polygon
+/// separates them by more than maxSeparation + 2 slop (slop = 1e-12 minSize, edgeContact's round-off
+/// allowance). Stops at the first such edge. Then edgeContact(A, B, maxSeparation, nullptr, ...,
+/// minSize) returns touching = false: its chosen edge is at most one slop worse than the best, so
+/// its separation exceeds maxSeparation + slop. For the potential interactions of the collider
+/// (bounding boxes overlap, blocks apart), which YADE hands to the geometry functor at every step.
+bool separatedBeyond(const PolygonView& A, const PolygonView& B, Real maxSeparation, Real minSize);
+
 /// Gauss-Legendre integration points on the contact segment, nIP in 1..8 (throws
 /// std::invalid_argument otherwise). s: parametric positions in [0,1] from p0 to p1 (increasing);
 /// w: weights summing to 1, so that  integral over the segment of f = length * sum_k w_k f(s_k).
