@@ -219,6 +219,14 @@ def main():
             jobs.append(("rbsm verletDist/BH=%g" % v, dict(case="wall", method="rbsm", verlet=v * 0.1, settle_steps=10, steps=20, **WALL), 10))
         for v in (0.0, 0.1, 0.7):
             jobs.append(("rbsm contact damping=%g" % v, dict(case="wall", method="rbsm", contact_damping=v, settle_steps=10, steps=20, **WALL), 10))
+        # frozen contact kinematics between exact updates (Ig2 updateTolerance; the default 0 is exact)
+        for v in (1e-4, 1e-3):
+            jobs.append(("rbsm updateTolerance=%g" % v, dict(case="wall", method="rbsm", update_tol=v, settle_steps=10, steps=20, **WALL), 10))
+        # the same wall later, while it bounces and settles (after 300 steps): joints open and close, blocks move
+        for tag, extra in (("rbsm", {}), ("rbsm updateTolerance=1e-4", {"update_tol": 1e-4}), ("spheres", {})):
+            method = tag.split()[0]
+            jobs.append((tag + " after 300 steps", dict(case="wall", method=method, settle_steps=300, steps=20, **extra, **WALL), 300))
+        jobs.append(("rbsm updateTolerance=1e-4 scaling 100x100", dict(case="wall", method="rbsm", update_tol=1e-4, nx=100, ny=100, settle_steps=5, steps=5), 5))
         # scaling in instructions (deterministic; the wall-clock scaling below also contains cache effects)
         for n in (10, 32, 100):
             jobs.append(("rbsm scaling %dx%d" % (n, n), dict(case="wall", method="rbsm", nx=n, ny=n, settle_steps=5, steps=5), 5))
@@ -251,6 +259,7 @@ def main():
     knobs += [("verletDist/BH", v, {"verlet": v * BH}) for v in (0.0, 0.01, 0.05, 0.2)]
     knobs += [("safety", v, {"safety": v}) for v in (0.3, 0.5, 0.8, 0.95)]
     knobs += [("contact damping", v, {"contact_damping": v}) for v in (0.0, 0.1, 0.3, 0.7)]
+    knobs += [("updateTolerance", v, {"update_tol": v}) for v in (0.0, 1e-4, 1e-3)]
 
     def knob_err(k):
         name, v, kw = k
@@ -450,6 +459,22 @@ def report(R):
         r_il = cg["rbsm"]["per_contact_step"]["InteractionLoop"] / cg["spheres"]["per_contact_step"]["InteractionLoop"]
         tg.append(("RBSM ≤ 1.0× spheres per contact-step", r_cs <= 1.0,
                    "%.2f× (whole step), %.2f× (InteractionLoop), instructions" % (r_cs, r_il)))
+        ut = cg.get("rbsm updateTolerance=1e-4")
+        if ut:
+            r_ut = ut["per_contact_step"]["step"] / cg["spheres"]["per_contact_step"]["step"]
+            tg.append(("RBSM ≤ 1.0× spheres per contact-step, frozen kinematics (updateTolerance=1e-4)", r_ut <= 1.0,
+                       "%.2f× (whole step), instructions" % r_ut))
+        late = [cg.get(t + " after 300 steps") for t in ("rbsm", "rbsm updateTolerance=1e-4", "spheres")]
+        if all(late):
+            tg.append(("... the same after 300 steps (wall bouncing): exact / frozen", late[1]["per_contact_step"]["step"] <= late[2]["per_contact_step"]["step"],
+                       "%.2f× / %.2f× (whole step), instructions" % (late[0]["per_contact_step"]["step"] / late[2]["per_contact_step"]["step"],
+                                                                  late[1]["per_contact_step"]["step"] / late[2]["per_contact_step"]["step"])))
+        big_ut, big_sp = cg.get("rbsm updateTolerance=1e-4 scaling 100x100"), cg.get("spheres scaling 100x100")
+        big_ex = cg.get("rbsm scaling 100x100")
+        if big_ut and big_sp and big_ex:
+            tg.append(("... at 10⁴ blocks: exact / frozen", big_ut["per_contact_step"]["step"] <= big_sp["per_contact_step"]["step"],
+                       "%.2f× / %.2f× (whole step), instructions" % (big_ex["per_contact_step"]["step"] / big_sp["per_contact_step"]["step"],
+                                                                  big_ut["per_contact_step"]["step"] / big_sp["per_contact_step"]["step"])))
     # Polyhedra cannot run under valgrind (CGAL's interval arithmetic needs rounding modes that valgrind does
     # not emulate: "Unhandled switch case" warnings, then SIGSEGV in the convex hull), and the machine has no
     # hardware instruction counter (perf: not supported); so this ratio is from the wall clock (sum of the
@@ -509,7 +534,8 @@ def knob_cost(R, k):
         return base["per_contact_step"]["step"], base["per_step"]["step"] / dt, dt
     tag = {"nIP": "rbsm nIP=%d" % v if v != 2 else "rbsm",
            "verletDist/BH": "rbsm verletDist/BH=%g" % v if v != 0 else "rbsm",
-           "contact damping": "rbsm contact damping=%g" % v if v != 0.3 else "rbsm"}.get(name)
+           "contact damping": "rbsm contact damping=%g" % v if v != 0.3 else "rbsm",
+           "updateTolerance": "rbsm updateTolerance=%g" % v if v != 0 else "rbsm"}.get(name)
     c = cg.get(tag)
     if not c:
         return None
@@ -536,7 +562,7 @@ def plot(R):
     ax.set_title("Methods (wall clock)")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
-    mk = {"nIP": "o", "verletDist/BH": "s", "safety": "^", "contact damping": "D"}
+    mk = {"nIP": "o", "verletDist/BH": "s", "safety": "^", "contact damping": "D", "updateTolerance": "v"}
     done = set()
     for k in R["knobs"]:
         c = knob_cost(R, k)
