@@ -14,6 +14,8 @@ The parent run (threads as given by -j) measures:
 and then starts itself again with the other thread count (-j1 <-> -j2) as a child (option --child) for the
 thread comparison. Each scene: SETTLE steps untimed, then STEPS steps with O.timingEnabled=True.
 Prints a Markdown table and writes docs/benchmarks.md (table, per-engine timing, machine, command).
+With --alternate it only prints CPU time per contact-step of exact RBSM, frozen RBSM and spheres, alternated three
+times (for a noisy machine; writes nothing).
 This is a benchmark, not a test: it asserts nothing, except that the RBSM contact count does not depend on
 the collider's verletDist.
 """
@@ -314,7 +316,26 @@ def main():
     print("written", DOC, "in %.0f s" % (time.perf_counter() - t_start))
 
 
+def run_alternate(reps=3, steps=450):
+    """Exact RBSM, frozen RBSM (updateTolerance=UT) and spheres, alternated `reps` times in this process: CPU time
+    per contact-step over `steps` steps after SETTLE (noise of a shared machine hits all three alike). Prints only."""
+    for rep in range(reps):
+        for name in ("RBSM exact", "RBSM updateTolerance=%g" % UT, "spheres"):
+            if name == "spheres":
+                build_spheres()
+            else:
+                build_wall(nIP=2, update_tolerance=0.0 if name == "RBSM exact" else UT)
+            O.run(SETTLE, True)
+            t0 = time.process_time()
+            O.run(steps, True)
+            nc = O.interactions.countReal()
+            print("round %d  %-28s CPU %.3f µs / contact-step  (%d contacts)" % (rep, name, (time.process_time() - t0) / steps / nc * 1e6, nc),
+                  flush=True)
+
+
 if "--child" in sys.argv:
     run_child()
+elif "--alternate" in sys.argv:
+    run_alternate()
 else:
     main()

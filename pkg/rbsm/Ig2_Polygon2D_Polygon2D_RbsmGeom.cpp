@@ -124,11 +124,11 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	const Vector2r d12 = state2.pos.head<2>() - state1.pos.head<2>();
 	const Vector2r rel(cos1 * d12.x() + sin1 * d12.y(), -sin1 * d12.x() + cos1 * d12.y()); // R(−θ1)(x2 − x1)
 	const Real     relCos = cos1 * cos2 + sin1 * sin2, relSin = cos1 * sin2 - sin1 * cos2;  // θ2 − θ1
-	const bool         existing = I->geom && !force;
-	RbsmGeom*          g        = existing ? static_cast<RbsmGeom*>(I->geom.get()) : nullptr;
-	const Real         minSize  = 2 * std::min(A.circumradius, B.circumradius); // the smaller block's diameter
 	const rbsm::RelativePose relPose { rel, relCos, relSin };
-	rbsm::EdgeContact  c;
+	const bool               existing = I->geom && !force;
+	RbsmGeom*                g        = existing ? static_cast<RbsmGeom*>(I->geom.get()) : nullptr;
+	const Real               minSize  = 2 * std::min(A.circumradius, B.circumradius); // the smaller block's diameter
+	rbsm::EdgeContact        c;
 
 	// New contacts need touch or closeness. An existing joint is followed while it opens as far
 	// as its intact springs can hold tension (σt/kn, doubled as margin) so that the law, not the
@@ -151,9 +151,9 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	bool frozen = false;
 	if (g && updateTolerance > 0 && g->frozen.valid && !g->lost
 	    && rbsm::frozenDrift(g->frozen, relPose, A.circumradius, B.circumradius) <= updateTolerance * minSize) {
-		c                = rbsm::frozenContact(g->frozen, relPose);
-		const Real slop  = 1e-12 * minSize, dMin = std::min(c.d0, c.d1);
-		frozen           = dMin >= -slop || dMin >= -(reach() + slop); // (reach() ≥ 0: only asked for an opening joint)
+		c               = rbsm::frozenContact(g->frozen, relPose);
+		const Real slop = 1e-12 * minSize, dMin = std::min(c.d0, c.d1);
+		frozen          = dMin >= -slop || dMin >= -(reach() + slop); // (reach() ≥ 0: asked only for an opening joint)
 	}
 	if (!frozen) {
 		rbsm::Vec2              stackA[2 * kStackVertices], stackB[2 * kStackVertices];

@@ -88,6 +88,9 @@ cases = {
     "ig2_nIP_9": lambda: attr_step(ig2o, "nIP", 9),
     "ig2_interactionDistance_negative": lambda: attr_step(ig2o, "interactionDistance", -1.0),
     "ig2_hysteresis_negative": lambda: attr_step(ig2o, "hysteresis", -1.0),
+    "ig2_updateTolerance_negative": lambda: attr_step(ig2o, "updateTolerance", -1e-4),
+    "ig2_updateTolerance_nan": lambda: attr_step(ig2o, "updateTolerance", nan),
+    "ig2_updateTolerance_large": lambda: attr_step(ig2o, "updateTolerance", 0.5),
     "law_dampingRatio_negative": lambda: attr_step(lawo, "dampingRatio", -0.5),
     "law_dampingRatio_nan": lambda: attr_step(lawo, "dampingRatio", nan),
 }
