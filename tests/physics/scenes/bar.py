@@ -3,7 +3,8 @@ mode 'mode1': N unit squares (a), no gravity, bonded (strong), initial velocity 
   fundamental mode v_i = v0 cos(π x_i/L); returns the times of the zero crossings of block 0's velocity.
 mode 'tension': a fixed block and a kinematic block (thickness t) pulled apart at constant speed until
   the joint breaks and separates, pushed back into contact (compression), then pulled again; returns the
-  largest tension before the break, the joint state after it and the largest tension afterwards."""
+  largest tension before the break, the joint state after it and the largest tension afterwards.
+Param ut: Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance (default 0, exact geometry)."""
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from math import pi, cos, sqrt

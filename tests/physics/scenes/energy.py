@@ -5,7 +5,8 @@ mode 'friction': a 1 x 0.5 block settles on a fixed floor (φ, g = 9.81, contact
   launched at v0 and slides to rest; returns the kinetic energy lost and the increments of the law's
   'plastDissip', 'viscDamp' and 'elastPotential' over the slide, the sliding distance and the largest
   ratio |Ft|/|Fn| of the contact force on the block in the first 200 steps after the launch (the
-  damping ratio during the slide is xi_slide, default xi)."""
+  damping ratio during the slide is xi_slide, default xi).
+Param ut: Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance (default 0, exact geometry)."""
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from math import radians

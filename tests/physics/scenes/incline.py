@@ -4,7 +4,8 @@ params: psi (deg), phi (deg), c (Pa, bonded joint if > 0), L, H, dt, mode:
             block's x velocity over the second half and its displacement.
   'ramp':   settle under vertical gravity (settle steps), then tilt gravity linearly from 0 to psi over
             `ramp` steps, then hold `hold` steps; returns the tilt at which the joint first lost an
-            intact point (None if never), the displacement along the slope and the final velocity."""
+            intact point (None if never), the displacement along the slope and the final velocity.
+Param ut: Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance (default 0, exact geometry)."""
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from math import radians, degrees, sin, cos

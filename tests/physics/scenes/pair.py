@@ -1,7 +1,8 @@
 """Two blocks in contact created in either id order: a square and a rotated triangle whose vertex is
 pressed into the square's top edge, with relative sliding and spinning velocities, no gravity.
 params: case 'edge' or 'vertex', order 'AB' (square first) or 'BA'; steps. Returns, per block (keyed 'square', 'triangle'), the
-force and torque of the last step and the final position."""
+force and torque of the last step and the final position.
+Param ut: Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance (default 0, exact geometry)."""
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from math import radians

@@ -3,7 +3,8 @@ Step 1 makes the bonded contacts at zero strain; then every block gets the affin
 u(X) (translation only, no rotation), positions set to X + u and velocities to u/dt (the shear spring is
 incremental, Δus = relative tangential velocity · dt), and one more step computes the tractions.
 params: mode 'uniaxial' (u = (eps·x, 0)) or 'shear' (pure shear u = (γ/2·y, γ/2·x)), strain, planeStrain,
-E, nu, nx, ny, a. Returns per interaction: ids, normal, length, normalTraction, shearTraction, kn, ks."""
+E, nu, nx, ny, a. Returns per interaction: ids, normal, length, normalTraction, shearTraction, kn, ks.
+Param ut: Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance (default 0, exact geometry)."""
 import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from _common import params, emit

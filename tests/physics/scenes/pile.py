@@ -1,6 +1,7 @@
 """A small pile: 36 blocks (brick rows, slightly rotated quadrilaterals from a seeded generator) falling
 into a fixed box under gravity, frictional (φ = 30°), contact damping ξ = 0.1, dt = 1e-4.
-Returns every block's x, y, rotation angle and velocity after `steps` steps."""
+Returns every block's x, y, rotation angle and velocity after `steps` steps.
+Param ut: Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance (default 0, exact geometry)."""
 import os, sys, random
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from math import radians, cos, sin, atan2
