@@ -40,7 +40,8 @@ public:
 		((std::vector<Real>, shearIncrement, , (Attr::readonly | Attr::noSave), "Tangential relative displacement Δus_k of this step at each point [m]."))
 		((std::vector<Real>, normalVelocity, , (Attr::readonly | Attr::noSave), "Relative normal velocity at each point [m/s] (> 0 closing)."))
 		((std::vector<Real>, shearVelocity, , (Attr::readonly | Attr::noSave), "Relative tangential velocity at each point [m/s]."))
-		((int, frozenSteps, 0, (Attr::readonly | Attr::noSave), "Steps since the contact geometry was last computed exactly (0: exact at this step). Above 0 only with :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance` > 0, while the joint is followed as material points."))
+		((int, frozenSteps, 0, Attr::readonly, "Steps since the contact geometry was last computed exactly (0: exact at this step). Above 0 only with :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance` > 0, while the joint is followed as material points."))
+		((std::vector<Real>, frozenState, , Attr::hidden, "The frozen contact (rbsm::FrozenContact, see frozenSteps) packed for saving; empty when there is none."))
 		((bool, lost, false, (Attr::readonly | Attr::noSave), "The blocks of this joint no longer face each other within reach (the facing edge clipped away, or separated beyond what intact springs can hold): the law breaks every point and removes the joint."))
 		((Vector2r, centroid1, Vector2r::Zero(), (Attr::readonly | Attr::noSave), "Centroid of block 1 at this step [m]."))
 		((Vector2r, centroid2, Vector2r::Zero(), (Attr::readonly | Attr::noSave), "Centroid of block 2 at this step [m].")),
@@ -54,8 +55,11 @@ public:
 	/// load the first step searches in full, with the same result.
 	rbsm::SearchMemory searchMemory;
 	/// The contact as material points at its last exact update (Ig2's updateTolerance > 0 only;
-	/// rbsm::FrozenContact). Not saved: after a load the first step is exact.
+	/// rbsm::FrozenContact). Saved through frozenState, so that a loaded scene continues like the
+	/// uninterrupted run.
 	rbsm::FrozenContact frozen;
+	void                preSave(RbsmGeom&) { frozenState = rbsm::packFrozen(frozen); }
+	void                postLoad(RbsmGeom&) { frozen = rbsm::unpackFrozen(frozenState); }
 	size_t   nPoints() const { return weights.size(); }
 	REGISTER_CLASS_INDEX(RbsmGeom, IGeom);
 };

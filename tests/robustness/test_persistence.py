@@ -51,6 +51,9 @@ What a save keeps, and what it cannot (measured with a per-step dump of both run
   attributes (RbsmGeom's δn, Δus, velocities, centroids, lost; Polygon2D's area, polar moment,
   circumradius; Law2's energy indices) are recomputed before they are used, at every step or on load.
 
+With frozen contact kinematics (Ig2 updateTolerance > 0) a joint's state also holds the material points of
+its last exact update (RbsmGeom.frozenState, saved): test_bitwise_with_frozen_kinematics.
+
 Prerequisite checked: joints broke and slipped before the save, so the saved state is not trivial.
 Steps: n1 = 1500 before the save (6000 with RBSM_LONG=1; by 15000 no joint is left), 300 after it with the sorted loop, 60 after it
 with the container's order (the tolerance after the first reordering, 1e-12 relative, holds there).
@@ -193,6 +196,29 @@ def test_engine_state(full_drop, ext, tmp_path):
           % (ext, saved["dt"], full["dt"], state, d, where))
     assert state is None and d == 0, "continued run differs from step %s, at the end by %.3e at %s" % (state, d, where)
     assert cont["estimate"] == saved["estimate"], "critical_time_step() of the loaded scene differs"
+
+
+WALL_FROZEN = dict(WALL_SORTED, ut=1e-3, n1=300, n2=300)
+
+
+@pytest.mark.parametrize("ext", ["xml", "bin"])
+def test_bitwise_with_frozen_kinematics(ext, tmp_path):
+    """Scene 'wall' with Ig2 updateTolerance = 1e-3 (frozen contact kinematics, sorted loop), saved at step
+    300 while the wall slides and its joints break: some joints are frozen at the save, relative to poses
+    of earlier steps. Those frozen states are saved (RbsmGeom.frozenState), so the continuation is bitwise
+    identical at every step; without them the first step after the load would update every joint exactly
+    and differ by the frozen kinematics' own error (checked by breaking the restore: the state then
+    differs from the first step after the load)."""
+    full = run_scene("persist", dict(WALL_FROZEN, mode="full"))
+    saved, cont = save_and_continue("persist", WALL_FROZEN, tmp_path, ext)
+    assert saved["frozen_joints"] > 0, "a joint must be frozen at the save (the test covers its state)"
+    order, state = compare_steps(full["steps"], cont["steps"])
+    d, where = diff({k: full[k] for k in KEYS}, {k: cont[k] for k in KEYS})
+    print("%s, frozen kinematics: %d of %d joints frozen at the save; first differing step %s, at the end %.3e at %s"
+          % (ext, saved["frozen_joints"], len(saved["joints"]), state, d, where))
+    assert order is None
+    assert state is None, "%s: the state differs from step %d on" % (ext, state)
+    assert d == 0, "continued run differs by %.3e at %s" % (d, where)
 
 
 def test_spheres(tmp_path):

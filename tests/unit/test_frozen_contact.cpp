@@ -163,3 +163,28 @@ TEST(FrozenContact, FreezingNothingIsInvalid)
 	EdgeContact apart; // touching = false
 	EXPECT_FALSE(freezeContact(apart, RelativePose {}).valid);
 }
+
+TEST(FrozenContact, PackAndUnpackRoundTrip)
+{
+	const Pair          pr(0.6, 0.2, 1e-3, 2);
+	const FrozenContact f = freezeContact(pr.exact(pr.pose), pr.pose);
+	ASSERT_TRUE(f.valid);
+	const std::vector<Real> v = packFrozen(f);
+	EXPECT_EQ(v.size(), 17u);
+	const FrozenContact g = unpackFrozen(v);
+	ASSERT_TRUE(g.valid);
+	const RelativePose now = poseOf(0.21, 0.5 - 1.2e-3, 1e-5);
+	const EdgeContact  a = frozenContact(f, now), b = frozenContact(g, now);
+	EXPECT_EQ(a.d0, b.d0); // bitwise: a loaded scene continues exactly
+	EXPECT_EQ(a.d1, b.d1);
+	EXPECT_EQ(a.p0, b.p0);
+	EXPECT_EQ(a.p1, b.p1);
+	EXPECT_EQ(a.normal, b.normal);
+	EXPECT_EQ(a.refEdge, b.refEdge);
+	EXPECT_TRUE(packFrozen(FrozenContact {}).empty());
+	EXPECT_FALSE(unpackFrozen({}).valid);
+	EXPECT_FALSE(unpackFrozen(std::vector<Real>(16, 1.0)).valid);
+	std::vector<Real> bad = v;
+	bad[0]                = 3; // no such reference body
+	EXPECT_FALSE(unpackFrozen(bad).valid);
+}

@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace rbsm {
 
@@ -120,6 +121,38 @@ inline EdgeContact frozenContact(const FrozenContact& f, const RelativePose& now
 	c.refEdge    = f.refEdge;
 	c.touching   = true;
 	return c;
+}
+
+/// The state as 17 numbers, for saving with a scene: refBody, refEdge, nRef, p0, p1, q0, q1, length,
+/// pose (r, cos, sin); empty if it is not valid. A scene saved and loaded then continues with the
+/// same frozen joints as the uninterrupted run (an exact update instead would differ by the
+/// frozen kinematics' own error, not by round-off).
+inline std::vector<Real> packFrozen(const FrozenContact& f)
+{
+	if (!f.valid) return {};
+	return { Real(f.refBody), Real(f.refEdge), f.nRef.x(), f.nRef.y(), f.p0.x(), f.p0.y(), f.p1.x(), f.p1.y(), f.q0.x(), f.q0.y(),
+		 f.q1.x(),        f.q1.y(),        f.length,   f.pose.r.x(), f.pose.r.y(), f.pose.cos, f.pose.sin };
+}
+
+/// Inverse of packFrozen; anything else (empty, another length, a reference body other than 1 or 2)
+/// gives an invalid state, whose joint is then updated exactly at the next step.
+inline FrozenContact unpackFrozen(const std::vector<Real>& v)
+{
+	FrozenContact f;
+	if (v.size() != 17 || !(v[0] == 1 || v[0] == 2) || !(v[1] >= 0)) return f;
+	f.refBody  = int(v[0]);
+	f.refEdge  = int(v[1]);
+	f.nRef     = Vec2(v[2], v[3]);
+	f.p0       = Vec2(v[4], v[5]);
+	f.p1       = Vec2(v[6], v[7]);
+	f.q0       = Vec2(v[8], v[9]);
+	f.q1       = Vec2(v[10], v[11]);
+	f.length   = v[12];
+	f.pose.r   = Vec2(v[13], v[14]);
+	f.pose.cos = v[15];
+	f.pose.sin = v[16];
+	f.valid    = true;
+	return f;
 }
 
 } // namespace rbsm

@@ -11,6 +11,7 @@ of the falling block must not be bonded, as in the uninterrupted run) and the st
 check (the checks after the load must fall on the same steps, or O.dt is lowered by other amounts).
 
 mode 'full': n1 + n2 steps at once; 'save': n1 steps then O.save(file); 'load': O.load(file), n2 steps.
+ut: Ig2's updateTolerance (frozen contact kinematics; default 0, exact geometry).
 sorted: InteractionLoop.loopOnSortedInteractions (YADE's option: the loop visits the interactions sorted by
 ids instead of in the container's order, which differs after a load, see the test).
 trace: the n2 steps after the save (or after n1 in 'full') are made one by one and each one recorded: the
@@ -39,7 +40,8 @@ def build_wall():
             x = i + (0.5 if j % 2 else 0)
             O.bodies.append(polygon2d([(x, j * 0.5), (x + 1, j * 0.5), (x + 1, (j + 1) * 0.5), (x, (j + 1) * 0.5)], m))
     a = math.radians(30)
-    O.engines = engines(gravity=(9.81 * math.sin(a), -9.81 * math.cos(a), 0), contact_damping=0.1, interval=7)
+    O.engines = engines(gravity=(9.81 * math.sin(a), -9.81 * math.cos(a), 0), contact_damping=0.1, interval=7,
+                        update_tolerance=p.get("ut", 0.0))
 
 
 def build_drop():
@@ -53,7 +55,7 @@ def build_drop():
     corners = [(x * c - y * s, x * s + y * c) for x, y in [(-h / 2, -h / 2), (h / 2, -h / 2), (h / 2, h / 2), (-h / 2, h / 2)]]
     low = min(y for x, y in corners)
     O.bodies.append(polygon2d([(1 + x, y - low + 0.05) for x, y in corners], m))
-    O.engines = engines(gravity=(0, -9.81, 0), contact_damping=0.05, interval=7)
+    O.engines = engines(gravity=(0, -9.81, 0), contact_damping=0.05, interval=7, update_tolerance=p.get("ut", 0.0))
 
 
 def rbsm_phys(q):
@@ -87,5 +89,6 @@ else:
 ts = O.engines[3]
 out.update({"bodies": body_states(O), "joints": joint_states(O), "iter": O.iter, "time": O.time, "dt": O.dt,
             "energy": dict(O.energy.items()), "stepper": [ts.lastCheck, ts.criticalDt],
-            "cohesionPending": O.engines[2].physDispatcher.functors[0].setCohesionNow})
+            "cohesionPending": O.engines[2].physDispatcher.functors[0].setCohesionNow,
+            "frozen_joints": sum(1 for i in O.interactions if i.isReal and i.geom.frozenSteps > 0)})
 emit(out)
