@@ -8,17 +8,22 @@ contact forces in per-thread buffers (ForceContainer) that are summed afterwards
 summation order of the forces on a block depends on the thread count and on the scheduling (two -j2
 runs differ as well); measured differences are ~1e-13 after 4000 steps. 1e-9 leaves room for the growth
 of those round-off differences and still catches any real race (lost or doubled forces, shared
-per-contact state), which gives differences of order of the displacements themselves.
+per-contact state), which gives differences of order of the displacements themselves. Run with the exact
+geometry and with frozen contact kinematics (Ig2 updateTolerance = 1e-4, per-contact state in RbsmGeom).
 """
 import itertools
+
+import pytest
 
 from conftest import run_scene
 
 TOL = 1e-9
 
 
-def test_j1_j2_same_trajectories():
-    runs = [run_scene("pile", {}, threads=1), run_scene("pile", {}, threads=2), run_scene("pile", {}, threads=2)]
+@pytest.mark.parametrize("ut", [0.0, 1e-4])  # exact geometry (default) and frozen contact kinematics (updateTolerance)
+def test_j1_j2_same_trajectories(ut):
+    p = {"ut": ut}
+    runs = [run_scene("pile", p, threads=1), run_scene("pile", p, threads=2), run_scene("pile", p, threads=2)]
     assert [r["threads"] for r in runs] == [1, 2, 2]
     assert runs[0]["n_inter"] > 20, "the pile must be in contact"
     for a, b in itertools.combinations(range(3), 2):
