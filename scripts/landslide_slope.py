@@ -71,6 +71,8 @@ ap.add_argument("--tol", type=float, default=1e-3, help="unbalanced-force ratio 
 ap.add_argument("--max-settle", type=int, default=20000, help="max steps of the gravity stage")
 ap.add_argument("--time", type=float, default=3.0, help="simulated time of the dynamic stage [s]")
 ap.add_argument("--dt", type=float, default=None, help="time step [s] (default: 0.8 x critical)")
+ap.add_argument("--update-tolerance", type=float, default=0.0,
+                help="Ig2 updateTolerance: frozen contact kinematics between exact updates (default 0: exact geometry)")
 ap.add_argument("--small", action="store_true", help="tiny slope for smoke tests")
 ap.add_argument("--strength-reduction", action="store_true", help="also the FS by strength reduction")
 ap.add_argument("--sr-rtol", type=float, default=0.01, help="relative width of the final FS bracket")
@@ -134,7 +136,7 @@ print("joint plane psi = 35 deg from the toe (%.2f, %.2f) to the crack at x = %.
       % (toe, y0, xcrack, ycrack))
 
 bmin = min(args.brick) * 1e-2
-O.engines = yr.engines(gravity=(0, -9.81, 0), damping=0.7, set_dt=False, enlarge=bmin)
+O.engines = yr.engines(gravity=(0, -9.81, 0), damping=0.7, set_dt=False, enlarge=bmin, update_tolerance=args.update_tolerance)
 O.dt = 1e-6  # bonding step
 nj, nbroken = sl.bond_and_break(sb)
 dtc = yr.critical_time_step()
