@@ -21,7 +21,8 @@
 // round-off). A relative rotation α and tangential slip s since the update change the overlap at
 // the material points only at second order: the exact contact measures the overlap where the
 // incident edge crosses the normal through the integration point, the frozen one at the material
-// point that has slipped by s along an edge tilted by α, |Δd| ≲ |α| s + α² L; the segment ends
+// point that has slipped by s along an edge tilted by α, |Δd| ≲ (|α| + |d1 − d0|/L) s + α² L
+// (the joint's own overlap gradient is a tilt of the same kind); the segment ends
 // lag behind the exact ones by at most s (its length is the one of the update). With the motion
 // bounded by tol·size (frozenDrift below), the overlap error is O(tol²·size) and the contact
 // length error O(tol·size). Unit tests: tests/unit/test_frozen_contact.cpp.
