@@ -12,7 +12,6 @@ namespace rbsm {
 
 namespace {
 	using Mat3 = Eigen::Matrix3d;
-	using Row6 = Eigen::Matrix<Real, 1, 6>;
 
 	void check(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts)
 	{
@@ -26,25 +25,29 @@ namespace {
 		}
 	}
 
-	// Visits the 6x6 stiffness of each contact (DOFs of body1 then body2).
-	template <class F> void forEachContactStiffness(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts, F&& f)
+	// The stiffness of one contact in 3x3 blocks (DOFs ux, uy, theta of body1, then of body2): a
+	// spring kk along d at x_k adds kk b b^T with b = (b1, b2), b1 = -(d, r1 x d), b2 = (d, r2 x d),
+	// so K11 += kk b1 b1^T, K22 += kk b2 b2^T, K12 += kk b1 b2^T (and K21 = K12^T).
+	struct ContactBlocks {
+		Mat3 K11 = Mat3::Zero(), K22 = Mat3::Zero(), K12 = Mat3::Zero();
+	};
+	ContactBlocks contactStiffness(const std::vector<DynBody>& bodies, const DynContact& c)
 	{
-		for (const auto& c : contacts) {
-			Eigen::Matrix<Real, 6, 6> K = Eigen::Matrix<Real, 6, 6>::Zero();
-			const Vec2&               c1 = bodies[c.body1].centroid;
-			const Vec2&               c2 = bodies[c.body2].centroid;
-			for (size_t k = 0; k < c.points.size(); ++k) {
-				const Vec2 r1 = c.points[k] - c1, r2 = c.points[k] - c2;
-				for (int dir = 0; dir < 2; ++dir) {
-					const Vec2& d   = dir == 0 ? c.normal : c.tangent;
-					const Real  kk  = (dir == 0 ? c.kn : c.ks) * c.areas[k];
-					Row6        B;
-					B << -d.x(), -d.y(), -cross2(r1, d), d.x(), d.y(), cross2(r2, d);
-					K.noalias() += kk * B.transpose() * B;
-				}
+		ContactBlocks K;
+		const Vec2&   c1 = bodies[c.body1].centroid;
+		const Vec2&   c2 = bodies[c.body2].centroid;
+		for (size_t k = 0; k < c.points.size(); ++k) {
+			const Vec2 r1 = c.points[k] - c1, r2 = c.points[k] - c2;
+			for (int dir = 0; dir < 2; ++dir) {
+				const Vec2&           d  = dir == 0 ? c.normal : c.tangent;
+				const Real            kk = (dir == 0 ? c.kn : c.ks) * c.areas[k];
+				const Eigen::Vector3d b1(-d.x(), -d.y(), -cross2(r1, d)), b2(d.x(), d.y(), cross2(r2, d));
+				K.K11.noalias() += (kk * b1) * b1.transpose();
+				K.K22.noalias() += (kk * b2) * b2.transpose();
+				K.K12.noalias() += (kk * b1) * b2.transpose();
 			}
-			f(c, K);
 		}
+		return K;
 	}
 } // namespace
 
@@ -52,30 +55,14 @@ Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::v
 {
 	check(bodies, contacts);
 	const size_t n = bodies.size();
-	// The 3x3 blocks of K, assembled directly: a spring kk along d at x_k adds kk b b^T with
-	// b = (b1, b2), b1 = -(d, r1 x d), b2 = (d, r2 x d); K11 += kk b1 b1^T, K22 += kk b2 b2^T,
-	// K12 += kk b1 b2^T (the 6x6 of forEachContactStiffness, without its zero half).
 	std::vector<Mat3> diag(n, Mat3::Zero());
 	std::vector<Mat3> offOfContact(contacts.size());
 	for (size_t ci = 0; ci < contacts.size(); ++ci) {
-		const DynContact& c  = contacts[ci];
-		const Vec2&       c1 = bodies[c.body1].centroid;
-		const Vec2&       c2 = bodies[c.body2].centroid;
-		Mat3              K11 = Mat3::Zero(), K22 = Mat3::Zero(), K12 = Mat3::Zero();
-		for (size_t k = 0; k < c.points.size(); ++k) {
-			const Vec2 r1 = c.points[k] - c1, r2 = c.points[k] - c2;
-			for (int dir = 0; dir < 2; ++dir) {
-				const Vec2&           d  = dir == 0 ? c.normal : c.tangent;
-				const Real            kk = (dir == 0 ? c.kn : c.ks) * c.areas[k];
-				const Eigen::Vector3d b1(-d.x(), -d.y(), -cross2(r1, d)), b2(d.x(), d.y(), cross2(r2, d));
-				K11.noalias() += (kk * b1) * b1.transpose();
-				K22.noalias() += (kk * b2) * b2.transpose();
-				K12.noalias() += (kk * b1) * b2.transpose();
-			}
-		}
-		diag[c.body1] += K11;
-		diag[c.body2] += K22;
-		offOfContact[ci] = c.body1 < c.body2 ? K12 : Mat3(K12.transpose()); // the (lower id, higher id) block
+		const DynContact&   c = contacts[ci];
+		const ContactBlocks K = contactStiffness(bodies, c);
+		diag[c.body1] += K.K11;
+		diag[c.body2] += K.K22;
+		offOfContact[ci] = c.body1 < c.body2 ? K.K12 : Mat3(K.K12.transpose()); // the (lower id, higher id) block
 	}
 	// All contacts between the same pair of bodies summed first: contacts sorted by their pair.
 	auto pairKey = [&](size_t ci) {
@@ -134,12 +121,16 @@ Real criticalTimeStepExact(const std::vector<DynBody>& bodies, const std::vector
 		if (!bodies[b].fixed) dof[b] = 3 * nf++;
 	if (nf == 0) return std::numeric_limits<Real>::infinity();
 	Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * nf, 3 * nf);
-	forEachContactStiffness(bodies, contacts, [&](const DynContact& c, const Eigen::Matrix<Real, 6, 6>& Kc) {
-		const int d[2] = { dof[c.body1], dof[c.body2] };
-		for (int I = 0; I < 2; ++I)
-			for (int J = 0; J < 2; ++J)
-				if (d[I] >= 0 && d[J] >= 0) K.block<3, 3>(d[I], d[J]) += Kc.block<3, 3>(3 * I, 3 * J);
-	});
+	for (const DynContact& c : contacts) {
+		const ContactBlocks Kc   = contactStiffness(bodies, c);
+		const int           d1 = dof[c.body1], d2 = dof[c.body2];
+		if (d1 >= 0) K.block<3, 3>(d1, d1) += Kc.K11;
+		if (d2 >= 0) K.block<3, 3>(d2, d2) += Kc.K22;
+		if (d1 >= 0 && d2 >= 0) {
+			K.block<3, 3>(d1, d2) += Kc.K12;
+			K.block<3, 3>(d2, d1) += Kc.K12.transpose();
+		}
+	}
 	Eigen::VectorXd isq(3 * nf);
 	for (size_t b = 0; b < bodies.size(); ++b)
 		if (dof[b] >= 0) isq.segment<3>(dof[b]) << 1 / std::sqrt(bodies[b].mass), 1 / std::sqrt(bodies[b].mass), 1 / std::sqrt(bodies[b].inertia);

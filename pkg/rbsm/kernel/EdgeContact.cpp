@@ -151,19 +151,17 @@ namespace {
 	}
 
 	// Largest change of any edge separation since the memory's search (SearchMemory, skip rule in
-	// EdgeContact.hpp), plus the round-off pad. Also returns the current relative pose. Every
-	// Euclidean norm of the rule is bounded by the L1 norm (|x| + |y| >= sqrt(x² + y²)): a looser but
-	// still rigorous bound, without square roots.
+	// EdgeContact.hpp): relativeMotionBound, plus the round-off pad. Also returns the current
+	// relative pose.
 	Real separationDrift(const BlockPose& a, const BlockPose& b, const SearchMemory& m, Vec2& rel, Real& relCos, Real& relSin)
 	{
 		const Vec2 d = b.centroid - a.centroid;
 		rel          = Vec2(a.cos * d.x() + a.sin * d.y(), -a.sin * d.x() + a.cos * d.y()); // R(-θA) d
 		relCos       = a.cos * b.cos + a.sin * b.sin;
 		relSin       = a.cos * b.sin - a.sin * b.cos;
-		auto       l1    = [](const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); };
-		const Real chord = std::abs(relCos - m.relCos) + std::abs(relSin - m.relSin);
-		const Real pad   = 1e-9 * (l1(a.centroid) + l1(b.centroid) + a.radius + b.radius);
-		return l1(rel - m.rel) + chord * (a.radius + b.radius + l1(m.rel)) + pad;
+		auto       l1  = [](const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); };
+		const Real pad = 1e-9 * (l1(a.centroid) + l1(b.centroid) + a.radius + b.radius);
+		return relativeMotionBound(rel, relCos, relSin, m.rel, m.relCos, m.relSin, a.radius, b.radius) + pad;
 	}
 } // namespace
 

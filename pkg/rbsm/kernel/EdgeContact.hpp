@@ -18,6 +18,7 @@
 
 #include <pkg/rbsm/kernel/Types.hpp>
 
+#include <cmath>
 #include <vector>
 
 namespace rbsm {
@@ -84,6 +85,21 @@ struct SearchMemory {
 	Vec2 rel      = Vec2::Zero(); ///< centroid of B in A's frame at the search (m)
 	Real relCos = 1, relSin = 0;  ///< rotation of B relative to A at the search
 };
+
+/// Upper bound (m) of how far any point of either block can have moved relative to the other since
+/// an earlier pose: B at (rel, relCos, relSin) in A's frame now, at (rel0, cos0, sin0) then. In A's
+/// frame B's points move by at most |Δr| + χ R_B, in B's frame A's by at most |Δr| + χ (R_A + |r|),
+/// χ the chord of the relative rotation; every Euclidean norm is bounded by the L1 norm
+/// (|x| + |y| ≥ √(x² + y²)), a looser but still rigorous bound without square roots:
+///     |Δr|₁ + χ₁ (R_A + R_B + |r0|₁).
+/// Used by edgeContact's skip of the search (SearchMemory) and by the frozen kinematics
+/// (FrozenContact.hpp). radiusA, radiusB: circumradii (m).
+inline Real relativeMotionBound(const Vec2& rel, Real relCos, Real relSin, const Vec2& rel0, Real cos0, Real sin0, Real radiusA, Real radiusB)
+{
+	auto       l1    = [](const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); };
+	const Real chord = std::abs(relCos - cos0) + std::abs(relSin - sin0);
+	return l1(rel - rel0) + chord * (radiusA + radiusB + l1(rel0));
+}
 
 /// Computes the edge-to-edge contact of A (body 1) and B (body 2).
 ///

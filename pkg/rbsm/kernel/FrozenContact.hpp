@@ -87,14 +87,12 @@ inline FrozenContact freezeContact(const EdgeContact& c, const RelativePose& pos
 	return f;
 }
 
-/// Upper bound (L1 norms, m) of how far any point of either block has moved relative to the other
-/// since the update: |Δr| + χ (R_A + R_B + |r|), χ the chord of the relative rotation (the same
-/// bound as edgeContact's coherence, EdgeContact.hpp). radiusA, radiusB: circumradii (m).
+/// How far any point of either block can have moved relative to the other since the update (m):
+/// relativeMotionBound (EdgeContact.hpp), the bound of edgeContact's coherence. radiusA, radiusB:
+/// circumradii (m).
 inline Real frozenDrift(const FrozenContact& f, const RelativePose& now, Real radiusA, Real radiusB)
 {
-	const Real chord = std::abs(now.cos - f.pose.cos) + std::abs(now.sin - f.pose.sin);
-	const Vec2 dr    = now.r - f.pose.r;
-	return std::abs(dr.x()) + std::abs(dr.y()) + chord * (radiusA + radiusB + std::abs(f.pose.r.x()) + std::abs(f.pose.r.y()));
+	return relativeMotionBound(now.r, now.cos, now.sin, f.pose.r, f.pose.cos, f.pose.sin, radiusA, radiusB);
 }
 
 /// The contact at relative pose `now` from the material points (A's frame; EdgeContact's fields
