@@ -1,5 +1,6 @@
 #include <pkg/rbsm/Ig2_Polygon2D_Polygon2D_RbsmGeom.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
+#include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
@@ -10,6 +11,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace yade {
 
@@ -182,7 +184,7 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		}
 		if (!g) {
 			auto geom = shared_ptr<RbsmGeom>(new RbsmGeom);
-			rbsm::integrationPoints(nIP, geom->positions, geom->weights);
+			geom->setIntegrationPoints(nIP);
 			geom->thickness    = std::min(A.thickness, B.thickness);
 			geom->reducedMass  = reducedMass(state1, state2);
 			geom->searchMemory = newMemory;
@@ -223,30 +225,55 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		reportDeepOverlap(*I, std::max(c.d0, c.d1), minSize, atSetUp, scene->iter);
 	}
 
-	const size_t n = g->weights.size();
-	if (g->deltaN.size() != n) {
-		g->deltaN.resize(n);
-		g->shearIncrement.resize(n);
-		g->normalVelocity.resize(n);
-		g->shearVelocity.resize(n);
-	}
-	// Relative velocity of block 2 with respect to block 1 at a point x of the segment,
-	// v2 + ω2 × (x − c2) − v1 − ω1 × (x − c1), is linear in x: its value at p0 plus (ω2 − ω1) × (x − p0).
-	const Vector2r vRel0  = pointVelocity(state2, c.p0) - pointVelocity(state1, c.p0);
-	const Real     dOmega = state2.angVel.z() - state1.angVel.z();
-	const Vector2r seg    = c.p1 - c.p0;
-	const Vector2r dvds   = dOmega * Vector2r(-seg.y(), seg.x()); // d vRel / d s along p0 → p1
-	const Real     dt     = scene->dt;
-	for (size_t k = 0; k < n; k++) {
-		const Real s = g->positions[k];
-		// overlap is linear between the segment ends because both block boundaries are straight
-		g->deltaN[k]         = (1 - s) * c.d0 + s * c.d1;
-		const Vector2r vRel  = vRel0 + s * dvds;
-		g->normalVelocity[k] = -vRel.dot(g->normal); // closing is positive, like the overlap
-		g->shearVelocity[k]  = vRel.dot(g->tangent);
-		g->shearIncrement[k] = g->shearVelocity[k] * dt;
-	}
+	// The relative motion along the segment, which the law samples at its points (SegmentKinematics):
+	// block 2's velocity relative to block 1's at p0, v2 + ω2 × (p0 − c2) − v1 − ω1 × (p0 − c1).
+	g->d0                      = c.d0;
+	g->d1                      = c.d1;
+	g->relativeVelocity        = pointVelocity(state2, c.p0) - pointVelocity(state1, c.p0);
+	g->relativeAngularVelocity = state2.angVel.z() - state1.angVel.z();
 	return true;
+}
+
+// ---- RbsmGeom: the rule after a load, and Python's per-point lists ----
+
+void RbsmGeom::postLoad(RbsmGeom&)
+{
+	frozen = rbsm::unpackFrozen(frozenState);
+	if (nIP > 0) setIntegrationPoints(nIP); // throws for a file with nIP outside 1..8
+	else rule = nullptr;
+}
+
+Vector2r RbsmGeom::point(int k) const
+{
+	if (k < 0 || k >= nPoints()) throw std::out_of_range("RbsmGeom.point: index " + std::to_string(k) + " outside 0.." + std::to_string(nPoints() - 1));
+	return p0 + rule->s[k] * (p1 - p0);
+}
+
+namespace {
+	template <class F> std::vector<Real> perPoint(const RbsmGeom& g, F f)
+	{
+		std::vector<Real> v(g.nPoints());
+		for (int k = 0; k < g.nPoints(); k++)
+			v[k] = f(k, g.rule->s[k]);
+		return v;
+	}
+}
+
+std::vector<Real> RbsmGeom::pyPositions() const { return perPoint(*this, [](int, Real s) { return s; }); }
+std::vector<Real> RbsmGeom::pyWeights() const { return perPoint(*this, [this](int k, Real) { return rule->w[k]; }); }
+std::vector<Real> RbsmGeom::pyDeltaN() const { return perPoint(*this, [k = kinematics()](int, Real s) { return k.overlap(s); }); }
+std::vector<Real> RbsmGeom::pyNormalVelocity() const
+{
+	return perPoint(*this, [k = kinematics(), this](int, Real s) { return -k.velocity(s).dot(normal); });
+}
+std::vector<Real> RbsmGeom::pyShearVelocity() const
+{
+	return perPoint(*this, [k = kinematics(), this](int, Real s) { return k.velocity(s).dot(tangent); });
+}
+std::vector<Real> RbsmGeom::pyShearIncrement() const
+{
+	const Real dt = Omega::instance().getScene()->dt;
+	return perPoint(*this, [k = kinematics(), dt, this](int, Real s) { return k.velocity(s).dot(tangent) * dt; });
 }
 
 } // namespace yade

@@ -2,6 +2,10 @@
 #include <pkg/rbsm/RbsmGeom.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
 namespace yade {
 
 YADE_PLUGIN((RbsmPhys)(Ip2_RbsmMat_RbsmMat_RbsmPhys));
@@ -35,13 +39,80 @@ void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shar
 	p->tanPhi          = std::min(std::tan(m1.frictionAngle), std::tan(m2.frictionAngle));
 	p->cohesion        = std::min(m1.cohesion, m2.cohesion);
 	p->tensileStrength = std::min(m1.tensileStrength, m2.tensileStrength);
-	const size_t n     = g->nPoints();
-	p->shearTraction.assign(n, 0);
-	p->normalTraction.assign(n, 0);
-	p->intact.assign(n, bonded && (p->cohesion > 0 || p->tensileStrength > 0));
-	p->slipping.assign(n, false);
-	p->open.assign(n, false);
+	p->initPoints(g->nPoints(), bonded && (p->cohesion > 0 || p->tensileStrength > 0));
 	I->phys = p;
+}
+
+// ---- RbsmPhys: Python's per-point lists and the saved form of the points ----
+
+namespace {
+	template <class F> boost::python::list pointList(const RbsmPhys& p, F f)
+	{
+		boost::python::list l;
+		for (int k = 0; k < p.nPoints; k++)
+			l.append(f(p.points[k]));
+		return l;
+	}
+	template <class F> std::vector<Real> pointValues(const RbsmPhys& p, F f)
+	{
+		std::vector<Real> v(p.nPoints);
+		for (int k = 0; k < p.nPoints; k++)
+			v[k] = f(p.points[k]);
+		return v;
+	}
+}
+
+boost::python::list RbsmPhys::pyIntact() const { return pointList(*this, [](const Point& q) { return q.joint.intact; }); }
+boost::python::list RbsmPhys::pySlipping() const { return pointList(*this, [](const Point& q) { return q.joint.slipping; }); }
+boost::python::list RbsmPhys::pyOpen() const { return pointList(*this, [](const Point& q) { return q.joint.open; }); }
+std::vector<Real>   RbsmPhys::pyShearTraction() const { return pointValues(*this, [](const Point& q) { return q.joint.shearTraction; }); }
+std::vector<Real>   RbsmPhys::pyNormalTraction() const { return pointValues(*this, [](const Point& q) { return q.normalTraction; }); }
+
+void RbsmPhys::pySetShearTraction(const std::vector<Real>& tau)
+{
+	if (int(tau.size()) != nPoints)
+		throw std::invalid_argument(
+		        "RbsmPhys.shearTraction: one value per integration point (" + std::to_string(nPoints) + "), got " + std::to_string(tau.size()));
+	for (int k = 0; k < nPoints; k++)
+		if (!std::isfinite(tau[k])) throw std::invalid_argument("RbsmPhys.shearTraction: value " + std::to_string(k) + " is not finite");
+	for (int k = 0; k < nPoints; k++)
+		points[k].joint.shearTraction = tau[k];
+}
+
+void RbsmPhys::preSave(RbsmPhys&)
+{
+	shearTraction  = pyShearTraction();
+	normalTraction = pyNormalTraction();
+	intact.resize(nPoints), slipping.resize(nPoints), open.resize(nPoints);
+	for (int k = 0; k < nPoints; k++) {
+		intact[k]   = points[k].joint.intact;
+		slipping[k] = points[k].joint.slipping;
+		open[k]     = points[k].joint.open;
+	}
+}
+
+void RbsmPhys::postSave(RbsmPhys&) { shearTraction.clear(), normalTraction.clear(), intact.clear(), slipping.clear(), open.clear(); }
+
+// After a load, or a constructor from Python with some of these given: the non-empty ones set the
+// points (all of one length).
+void RbsmPhys::postLoad(RbsmPhys& self)
+{
+	const size_t sizes[] = { shearTraction.size(), normalTraction.size(), intact.size(), slipping.size(), open.size() };
+	const size_t n       = *std::max_element(std::begin(sizes), std::end(sizes));
+	if (n == 0) return;
+	for (size_t m : sizes)
+		if (m != 0 && m != n) throw std::invalid_argument("RbsmPhys: the per-point values (shearTraction, normalTraction, intact, slipping, open) differ in length");
+	if (n > size_t(rbsm::kMaxIntegrationPoints)) throw std::invalid_argument("RbsmPhys: more than 8 integration points (" + std::to_string(n) + ")");
+	if (nPoints != int(n)) initPoints(int(n), true);
+	for (size_t k = 0; k < n; k++) {
+		Point& q = points[k];
+		if (!shearTraction.empty()) q.joint.shearTraction = shearTraction[k];
+		if (!normalTraction.empty()) q.normalTraction = normalTraction[k];
+		if (!intact.empty()) q.joint.intact = intact[k] != 0;
+		if (!slipping.empty()) q.joint.slipping = slipping[k] != 0;
+		if (!open.empty()) q.joint.open = open[k] != 0;
+	}
+	postSave(self); // the points hold the state now
 }
 
 } // namespace yade

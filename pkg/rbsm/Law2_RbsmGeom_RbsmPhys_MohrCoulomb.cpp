@@ -2,6 +2,8 @@
 #include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace yade {
 
@@ -15,12 +17,17 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 {
 	RbsmGeom& g = static_cast<RbsmGeom&>(*ig);
 	RbsmPhys& p = static_cast<RbsmPhys&>(*ip);
-	const size_t n = g.nPoints();
+	const int n = g.nPoints();
+	if (p.nPoints != n)
+		throw std::runtime_error(
+		        "Law2_RbsmGeom_RbsmPhys_MohrCoulomb: interaction #" + std::to_string(I->getId1()) + "+#" + std::to_string(I->getId2()) + ": RbsmPhys has "
+		        + std::to_string(p.nPoints) + " integration points, its RbsmGeom " + std::to_string(n));
 	if (g.lost) { // the geometry found the blocks apart: every point breaks and opens, the joint goes
-		for (size_t k = 0; k < n; k++) {
-			p.intact[k] = p.slipping[k] = false;
-			p.open[k]                   = true;
-			p.shearTraction[k] = p.normalTraction[k] = 0;
+		for (int k = 0; k < n; k++) {
+			rbsm::JointPointState& st = p.points[k].joint;
+			st.intact = st.slipping = false;
+			st.open                 = true;
+			st.shearTraction = p.points[k].normalTraction = 0;
 		}
 		p.normalForce = p.shearForce = p.strength = 0;
 		return false;
@@ -40,31 +47,34 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	const Vector2r seg      = g.p1 - g.p0;
 	Real           elastic = 0, dissipated = 0, viscous = 0, normalForce = 0, shearForce = 0, strength = 0;
 	bool           carries = false;
-	for (size_t k = 0; k < n; k++) {
-		const Real            a = g.weights[k] * area;
-		rbsm::JointPointState st { p.shearTraction[k], p.intact[k] != 0, p.slipping[k] != 0, p.open[k] != 0 };
-		const rbsm::JointPointResult r = rbsm::updateJointPoint(st, params, g.deltaN[k], g.shearIncrement[k], a, scene->trackEnergy);
-		p.shearTraction[k]  = st.shearTraction;
-		p.intact[k]         = st.intact;
-		p.slipping[k]       = st.slipping;
-		p.open[k]           = st.open;
-		p.normalTraction[k] = r.normalTraction;
+	// The law samples the relative motion along the segment (linear, RbsmGeom) at its points.
+	const rbsm::SegmentKinematics kin = g.kinematics();
+	const Real                    dt  = scene->dt;
+	for (int k = 0; k < n; k++) {
+		const Real                   s   = g.rule->s[k];
+		const Real                   a   = g.rule->w[k] * area;
+		const Vector2r               v   = kin.velocity(s);
+		const Real                   vn  = -v.dot(g.normal); // closing is positive, like the overlap
+		const Real                   vs  = v.dot(g.tangent);
+		rbsm::JointPointState&       st  = p.points[k].joint;
+		const rbsm::JointPointResult r   = rbsm::updateJointPoint(st, params, kin.overlap(s), vs * dt, a, scene->trackEnergy);
+		p.points[k].normalTraction       = r.normalTraction;
 		Real fn = r.normalForce, fs = r.shearForce;
 		if (damped && !st.open) { // no damping force across an open joint
 			// shear damping only on the elastic branch: a slipping point is at its frictional limit
-			const Real dn = p.dampingCoefficient * g.normalVelocity[k] * a;
-			Real       ds = st.slipping ? 0 : -p.dampingCoefficient * g.shearVelocity[k] * a;
+			const Real dn = p.dampingCoefficient * vn * a;
+			Real       ds = st.slipping ? 0 : -p.dampingCoefficient * vs * a;
 			// the spring and the dashpot together stay within the Mohr-Coulomb strength
 			const Real limit = (st.intact ? p.cohesion : 0) * a + std::max<Real>(0, fn + dn) * p.tanPhi;
 			ds               = std::clamp(fs + ds, -limit, limit) - fs;
 			fn += dn;
 			fs += ds;
-			viscous += (dn * g.normalVelocity[k] - ds * g.shearVelocity[k]) * scene->dt;
+			viscous += (dn * vn - ds * vs) * dt;
 		}
 		carries = carries || !st.open;
 		const Vector2r f = fn * g.normal + fs * g.tangent;
 		force += f;
-		momentP0 += g.positions[k] * cross(seg, f); // (x_k − p0) × f, x_k − p0 = s_k (p1 − p0)
+		momentP0 += s * cross(seg, f); // (x_k − p0) × f, x_k − p0 = s_k (p1 − p0)
 		elastic += r.elasticEnergy;
 		dissipated += r.dissipated;
 		normalForce += r.normalForce;

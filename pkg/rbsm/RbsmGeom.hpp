@@ -3,17 +3,23 @@
 #include <core/IGeom.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 #include <pkg/rbsm/kernel/FrozenContact.hpp>
+#include <pkg/rbsm/kernel/SegmentKinematics.hpp>
 
 namespace yade {
 
 /* The contact line is an edge of one block (the reference edge); the other block's facing edge is
- * clipped to it, giving a segment p0-p1 of length ℓ on the reference line. Along it, integration
- * points x_k = p0 + s_k (p1 - p0) carry the joint springs (Gauss-Legendre s_k, weights w_k). At each
- * point the seed's eq. (8)-(9) give the relative displacement of block 2 with respect to block 1:
- *   δn_k  normal overlap, total, from the geometry: > 0 penetration, < 0 opening [m]
- *   Δus_k tangential increment of this step, (v2(x_k) - v1(x_k))·t dt [m]; the shear spring is
- *         tracked incrementally (RbsmPhys::shearTraction), so it follows the contact as it rotates
- *         and translates.
+ * clipped to it, giving a segment p0-p1 of length ℓ on the reference line. Along it, the joint
+ * springs sit at integration points x_k = p0 + s_k (p1 - p0) (Gauss-Legendre s_k, weights w_k, the
+ * rule of nIP points). Both blocks being rigid, the relative displacement of block 2 with respect
+ * to block 1 (the seed's eq. (8)-(9)) is linear along the segment (rbsm::SegmentKinematics), so the
+ * geometry stores its values at the ends and the law samples them at the points:
+ *   δn(s) = (1 − s) d0 + s d1      normal overlap, total, from the geometry: > 0 penetration [m]
+ *   v(s)  = v0 + s (ω2 − ω1) ẑ × (p1 − p0)   velocity of block 2 relative to block 1 [m/s]
+ *   Δus(s) = v(s)·t dt             tangential increment of the step; the shear spring is tracked
+ *                                  incrementally (RbsmPhys), so it follows the contact as it rotates
+ *                                  and translates.
+ * The per-point values are Python properties (deltaN, shearIncrement, normalVelocity, shearVelocity),
+ * computed when asked: no per-point arrays live in the contact.
  * Convention (YADE's): the normal n points from body 1 to body 2, t = (-n.y, n.x). */
 class RbsmGeom : public IGeom {
 public:
@@ -34,12 +40,11 @@ public:
 		((Real, reducedMass, 0, Attr::readonly, "m1·m2/(m1+m2) of the two blocks [kg] (a fixed block counts as infinite mass); used by contact damping."))
 		((int, refBody, 0, Attr::readonly, "Which block holds the reference edge (1 or 2); kept from step to step unless another edge is clearly better."))
 		((int, refEdge, -1, Attr::readonly, "Index of the reference edge (vertex i → i+1) on that block."))
-		((std::vector<Real>, weights, , Attr::readonly, "Integration weights w_k (sum 1); the tributary area of point k is w_k·ℓ·thickness."))
-		((std::vector<Real>, positions, , Attr::readonly, "Parametric positions s_k in [0, 1] of the integration points along p0→p1."))
-		((std::vector<Real>, deltaN, , (Attr::readonly | Attr::noSave), "Normal overlap δn_k at each integration point [m] (> 0 penetration)."))
-		((std::vector<Real>, shearIncrement, , (Attr::readonly | Attr::noSave), "Tangential relative displacement Δus_k of this step at each point [m]."))
-		((std::vector<Real>, normalVelocity, , (Attr::readonly | Attr::noSave), "Relative normal velocity at each point [m/s] (> 0 closing)."))
-		((std::vector<Real>, shearVelocity, , (Attr::readonly | Attr::noSave), "Relative tangential velocity at each point [m/s]."))
+		((int, nIP, 0, Attr::readonly, "Number of integration points along the contact (Gauss-Legendre rule of :yref:`positions<RbsmGeom.positions>` and :yref:`weights<RbsmGeom.weights>`), from :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.nIP` when the contact was made."))
+		((Real, d0, 0, (Attr::readonly | Attr::noSave), "Normal overlap at p0 [m] (> 0 penetration, < 0 gap); the overlap is linear along the segment, δn(s) = (1 − s) d0 + s d1."))
+		((Real, d1, 0, (Attr::readonly | Attr::noSave), "Normal overlap at p1 [m]."))
+		((Vector2r, relativeVelocity, Vector2r::Zero(), (Attr::readonly | Attr::noSave), "Velocity of block 2's material point at p0 relative to block 1's [m/s]."))
+		((Real, relativeAngularVelocity, 0, (Attr::readonly | Attr::noSave), "ω2 − ω1 [rad/s]; with relativeVelocity the relative velocity anywhere on the segment, v(s) = v0 + s (ω2 − ω1) ẑ × (p1 − p0)."))
 		((int, frozenSteps, 0, Attr::readonly, "Steps since the contact geometry was last computed exactly (0: exact at this step). Above 0 only with :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance` > 0, while the joint is followed as material points."))
 		((std::vector<Real>, frozenState, , Attr::hidden, "The frozen contact (rbsm::FrozenContact, see frozenSteps) packed for saving; empty when there is none."))
 		((bool, lost, false, (Attr::readonly | Attr::noSave), "The blocks of this joint no longer face each other within reach (the facing edge clipped away, or separated beyond what intact springs can hold): the law breaks every point and removes the joint."))
@@ -47,9 +52,36 @@ public:
 		((Vector2r, centroid2, Vector2r::Zero(), (Attr::readonly | Attr::noSave), "Centroid of block 2 at this step [m].")),
 		/*ctor*/ createIndex();,
 		/*py*/ .def("point", &RbsmGeom::point, "World position of integration point k [m].")
+		.add_property("positions", &RbsmGeom::pyPositions, "Parametric positions s_k in [0, 1] of the integration points along p0→p1.")
+		.add_property("weights", &RbsmGeom::pyWeights, "Integration weights w_k (sum 1); the tributary area of point k is w_k·ℓ·thickness.")
+		.add_property("deltaN", &RbsmGeom::pyDeltaN, "Normal overlap δn_k at each integration point [m] (> 0 penetration).")
+		.add_property("normalVelocity", &RbsmGeom::pyNormalVelocity, "Relative normal velocity at each point [m/s] (> 0 closing).")
+		.add_property("shearVelocity", &RbsmGeom::pyShearVelocity, "Relative tangential velocity at each point [m/s].")
+		.add_property("shearIncrement", &RbsmGeom::pyShearIncrement, "Tangential relative displacement Δus_k of a step at each point [m]: shearVelocity × O.dt.")
 	);
 	// clang-format on
-	Vector2r point(int k) const { return p0 + positions.at(k) * (p1 - p0); }
+	/// The rule of the nIP points (shared, static; null while nIP = 0).
+	const rbsm::IntegrationRule* rule = nullptr;
+	void                         setIntegrationPoints(int n)
+	{
+		rule = &rbsm::integrationRule(n); // throws std::invalid_argument outside 1..8
+		nIP  = n;
+	}
+	int nPoints() const { return rule ? rule->n : 0; }
+	/// The relative motion along the segment, for the law to sample at its points.
+	rbsm::SegmentKinematics kinematics() const
+	{
+		const Vector2r seg = p1 - p0;
+		return rbsm::SegmentKinematics { d0, d1, relativeVelocity, relativeAngularVelocity * Vector2r(-seg.y(), seg.x()) };
+	}
+	Vector2r point(int k) const;
+	// Python's per-point lists (defined with the functor, Ig2_Polygon2D_Polygon2D_RbsmGeom.cpp)
+	std::vector<Real> pyPositions() const;
+	std::vector<Real> pyWeights() const;
+	std::vector<Real> pyDeltaN() const;
+	std::vector<Real> pyNormalVelocity() const;
+	std::vector<Real> pyShearVelocity() const;
+	std::vector<Real> pyShearIncrement() const;
 	/// What the last full separating-axis search of this contact found (rbsm::SearchMemory): lets the
 	/// next steps skip the search while it provably would choose the same edge. Not saved: after a
 	/// load the first step searches in full, with the same result.
@@ -59,8 +91,7 @@ public:
 	/// uninterrupted run.
 	rbsm::FrozenContact frozen;
 	void                preSave(RbsmGeom&) { frozenState = rbsm::packFrozen(frozen); }
-	void                postLoad(RbsmGeom&) { frozen = rbsm::unpackFrozen(frozenState); }
-	size_t   nPoints() const { return weights.size(); }
+	void                postLoad(RbsmGeom&);
 	REGISTER_CLASS_INDEX(RbsmGeom, IGeom);
 };
 REGISTER_SERIALIZABLE(RbsmGeom);

@@ -2,33 +2,64 @@
 // of every integration point.
 #pragma once
 #include <core/IPhys.hpp>
+#include <pkg/rbsm/kernel/EdgeContact.hpp>
+#include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
+
+#include <array>
+#include <stdexcept>
+#include <string>
 
 namespace yade {
 
 class RbsmPhys : public IPhys {
 public:
+	/// The state of one integration point: the law's (rbsm::JointPointState: shear traction, intact,
+	/// slipping, open) and the normal traction it found. Kept inline, up to
+	/// rbsm::kMaxIntegrationPoints, so that a joint's state is one block of memory with the joint.
+	struct Point {
+		rbsm::JointPointState joint;
+		Real                  normalTraction = 0;
+	};
+	std::array<Point, rbsm::kMaxIntegrationPoints> points {};
+	int                                            nPoints = 0; ///< how many of points are in use (the geometry's nIP)
+
+	//! Sets up n points, all intact or all broken (Ip2, when the joint forms).
+	void initPoints(int n, bool intact)
+	{
+		if (n < 0 || n > rbsm::kMaxIntegrationPoints) throw std::invalid_argument("RbsmPhys: 0..8 integration points (got " + std::to_string(n) + ")");
+		nPoints = n;
+		for (auto& q : points) q = Point {};
+		for (int k = 0; k < n; k++) points[k].joint.intact = intact;
+	}
 	//! Breaks the joint at every integration point (no cohesion, no tension): a pre-existing crack.
 	void breakJoint()
 	{
-		for (auto&& ok : intact)
-			ok = false;
+		for (int k = 0; k < nPoints; k++)
+			points[k].joint.intact = false;
 	}
-	using Flags = std::vector<unsigned char>; // per-point booleans; not std::vector<bool>, whose bit access costs in the law's loop
-	int countTrue(const Flags& v) const { return int(std::count_if(v.begin(), v.end(), [](unsigned char b) { return b != 0; })); }
-	int nIntact() const { return countTrue(intact); }
-	int nSlipping() const { return countTrue(slipping); }
-	int nOpen() const { return countTrue(open); }
-	//! Per-point flags as Python lists of bool.
-	boost::python::list pyIntact() const { return toList(intact); }
-	boost::python::list pySlipping() const { return toList(slipping); }
-	boost::python::list pyOpen() const { return toList(open); }
-	static boost::python::list toList(const Flags& v)
+	template <class F> int countPoints(F f) const
 	{
-		boost::python::list l;
-		for (unsigned char b : v)
-			l.append(b != 0);
-		return l;
+		int c = 0;
+		for (int k = 0; k < nPoints; k++)
+			c += f(points[k].joint) ? 1 : 0;
+		return c;
 	}
+	int nIntact() const { return countPoints([](const rbsm::JointPointState& j) { return j.intact; }); }
+	int nSlipping() const { return countPoints([](const rbsm::JointPointState& j) { return j.slipping; }); }
+	int nOpen() const { return countPoints([](const rbsm::JointPointState& j) { return j.open; }); }
+	// Python's per-point lists (defined with the functor, Ip2_RbsmMat_RbsmMat_RbsmPhys.cpp)
+	boost::python::list pyIntact() const;
+	boost::python::list pySlipping() const;
+	boost::python::list pyOpen() const;
+	std::vector<Real>   pyShearTraction() const;
+	void                pySetShearTraction(const std::vector<Real>& tau);
+	std::vector<Real>   pyNormalTraction() const;
+	// Saving: the points go through the hidden attributes shearTraction ... open (the names and
+	// types of the per-point attributes of earlier versions), filled only around a save or load.
+	void preSave(RbsmPhys&);
+	void postSave(RbsmPhys&);
+	void postLoad(RbsmPhys&);
+	using Flags = std::vector<unsigned char>; // per-point booleans as saved
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RbsmPhys, IPhys,
 		"Joint of the Rigid-Bodies-Spring Model between two blocks: normal and shear springs per unit area "
@@ -41,17 +72,19 @@ public:
 		((Real, tanPhi, 0, , "tan φ of the joint friction angle."))
 		((Real, tensileStrength, 0, , "Tensile strength σt of the joint while intact [Pa]."))
 		((Real, dampingCoefficient, 0, Attr::readonly, "Viscous traction per relative velocity [Pa·s/m] (from the law's dampingRatio; saved, so that RbsmTimeStepper.estimate() of a loaded scene is right before its first step)."))
-		((std::vector<Real>, shearTraction, , , "Shear traction τ_k at each integration point [Pa] (incremental elastic, returned to the Mohr-Coulomb surface on slip)."))
-		((std::vector<Real>, normalTraction, , Attr::readonly, "Normal traction σn_k at each integration point [Pa] (> 0 compression)."))
-		((Flags, intact, , Attr::hidden, "Whether point k still has cohesion and tensile strength."))
-		((Flags, slipping, , Attr::hidden, "Whether point k is on the Mohr-Coulomb surface (slipping) this step."))
-		((Flags, open, , Attr::hidden, "Whether point k is broken and open (carries nothing)."))
+		((std::vector<Real>, shearTraction, , Attr::hidden, "Saved form of the shear traction τ_k of each point [Pa] (see the property of that name)."))
+		((std::vector<Real>, normalTraction, , Attr::hidden, "Saved form of the normal traction σn_k of each point [Pa]."))
+		((Flags, intact, , Attr::hidden, "Saved form of intactPoints."))
+		((Flags, slipping, , Attr::hidden, "Saved form of slippingPoints."))
+		((Flags, open, , Attr::hidden, "Saved form of openPoints."))
 		((Real, normalForce, 0, Attr::readonly, "Resultant normal force of the joint [N] (> 0 compression), Σ σn_k a_k."))
 		((Real, shearForce, 0, Attr::readonly, "Resultant shear force of the joint [N] along the contact tangent, Σ τ_k a_k."))
 		((Real, strength, 0, Attr::readonly, "Shear strength of the joint at the current normal stress, Σ (c_k + σn_k tanφ) a_k [N] (c_k = 0 where broken)."))
 		((Real, plasticDissipation, 0, Attr::readonly, "Energy dissipated by slip on this joint since it formed [J].")),
 		/*ctor*/ createIndex();,
 		/*py*/
+		.add_property("shearTraction", &RbsmPhys::pyShearTraction, &RbsmPhys::pySetShearTraction, "Shear traction τ_k at each integration point [Pa] (incremental elastic, returned to the Mohr-Coulomb surface on slip); may be set, one value per point.")
+		.add_property("normalTraction", &RbsmPhys::pyNormalTraction, "Normal traction σn_k at each integration point [Pa] (> 0 compression).")
 		.add_property("intactPoints", &RbsmPhys::pyIntact, "Per integration point: joint still intact (cohesion and tensile strength active).")
 		.add_property("slippingPoints", &RbsmPhys::pySlipping, "Per integration point: slipping on the Mohr-Coulomb surface this step.")
 		.add_property("openPoints", &RbsmPhys::pyOpen, "Per integration point: broken and open.")

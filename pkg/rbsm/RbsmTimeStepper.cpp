@@ -57,9 +57,9 @@ Real RbsmTimeStepper::estimate()
 		c.kn                = p->kn;
 		c.ks                = p->ks;
 		c.points.clear(), c.areas.clear(); // (their capacity is kept)
-		for (size_t k = 0; k < g->nPoints(); k++) {
-			c.points.push_back(g->point(int(k)));
-			c.areas.push_back(g->weights[k] * g->length * g->thickness);
+		for (int k = 0; k < g->nPoints(); k++) {
+			c.points.push_back(g->p0 + g->rule->s[k] * (g->p1 - g->p0));
+			c.areas.push_back(g->rule->w[k] * g->length * g->thickness);
 		}
 	}
 	dynContacts.resize(nContacts);

@@ -10,9 +10,10 @@ using namespace rbsm;
 
 TEST(IntegrationPoints, TwoPointValues)
 {
-	std::vector<Real> s, w;
-	integrationPoints(2, s, w);
-	ASSERT_EQ(s.size(), 2u);
+	const IntegrationRule& r = integrationRule(2);
+	const Real* s = r.s;
+	const Real* w = r.w;
+	ASSERT_EQ(r.n, 2);
 	EXPECT_NEAR(s[0], 0.5 - 0.5 / std::sqrt(3.0), 1e-15);
 	EXPECT_NEAR(s[1], 0.5 + 0.5 / std::sqrt(3.0), 1e-15);
 	EXPECT_NEAR(w[0], 0.5, 1e-15);
@@ -23,8 +24,10 @@ TEST(IntegrationPoints, TwoPointValues)
 TEST(IntegrationPoints, ExactnessDegree2nMinus1)
 {
 	for (int n = 1; n <= 8; ++n) {
-		std::vector<Real> s, w;
-		integrationPoints(n, s, w);
+		const IntegrationRule& r = integrationRule(n);
+		ASSERT_EQ(r.n, n);
+		const Real* s = r.s;
+		const Real* w = r.w;
 		Real sw = 0;
 		for (int i = 0; i < n; ++i) {
 			sw += w[i];
@@ -47,8 +50,8 @@ TEST(IntegrationPoints, ExactnessDegree2nMinus1)
 TEST(IntegrationPoints, LinearTractionForceAndMomentExactWithTwoPoints)
 {
 	const Real L = 2.5, p0 = 3.0, p1 = -7.0;
-	std::vector<Real> s, w;
-	integrationPoints(2, s, w);
+	const Real* s = integrationRule(2).s;
+	const Real* w = integrationRule(2).w;
 	Real F = 0, M = 0;
 	for (int i = 0; i < 2; ++i) {
 		const Real p = p0 + (p1 - p0) * s[i];
@@ -58,14 +61,20 @@ TEST(IntegrationPoints, LinearTractionForceAndMomentExactWithTwoPoints)
 	EXPECT_NEAR(F, L * (p0 + p1) / 2, 1e-13);
 	EXPECT_NEAR(M, L * L * (p0 + 2 * p1) / 6, 1e-13);
 	// the 1-point rule gets the force but not the moment: proves the test can fail
-	integrationPoints(1, s, w);
-	const Real M1 = L * w[0] * (p0 + (p1 - p0) * s[0]) * s[0] * L;
+	const IntegrationRule& one = integrationRule(1);
+	const Real M1 = L * one.w[0] * (p0 + (p1 - p0) * one.s[0]) * one.s[0] * L;
 	EXPECT_GT(std::abs(M1 - L * L * (p0 + 2 * p1) / 6), 1.0);
 }
 
 TEST(IntegrationPoints, RejectsOutOfRange)
 {
-	std::vector<Real> s, w;
-	EXPECT_THROW(integrationPoints(0, s, w), std::invalid_argument);
-	EXPECT_THROW(integrationPoints(9, s, w), std::invalid_argument);
+	EXPECT_THROW(integrationRule(0), std::invalid_argument);
+	EXPECT_THROW(integrationRule(9), std::invalid_argument);
+}
+
+// The rules are computed once and shared: a contact keeps a pointer to its rule.
+TEST(IntegrationPoints, RuleIsComputedOnceAndShared)
+{
+	EXPECT_EQ(&integrationRule(3), &integrationRule(3));
+	EXPECT_NE(&integrationRule(3), &integrationRule(4));
 }
