@@ -400,7 +400,7 @@ BW, BH = 0.2, 0.1
 
 
 def build_wall(method, nx, ny, phi=0.6, **kw):
-    """Staggered wall of nx x ny bricks BW x BH on a fixed base (spheres: hexagonal stack of spheres of radius
+    """Wall of ny courses of nx bricks BW x BH in running bond (half bricks at the ends of odd courses) on a fixed base (spheres: hexagonal stack of spheres of radius
     BH/2 with the same number of rows and a similar number of bodies, between side walls)."""
     O.reset()
     m = Method(method, phi, **kw)
@@ -420,10 +420,12 @@ def build_wall(method, nx, ny, phi=0.6, **kw):
         x0, x1 = -BW, (nx + 1) * BW
         m.ground(x0, x1) if method != "clumps" else O.bodies.append(utils.wall(0, axis=1, sense=1, material=m.mat))
         for j in range(ny):
-            off = 0.5 * BW if j % 2 else 0.0
             y0, y1 = j * BH, (j + 1) * BH
-            for i in range(nx):
-                m.block(i * BW + off, y0, (i + 1) * BW + off, y1, dsphere=BH)
+            # running bond: odd courses start and end with a half brick, so that no brick overhangs (an end
+            # brick overhanging by half its length is balanced on its tipping point and topples)
+            xs = [i * BW for i in range(nx + 1)] if j % 2 == 0 else [0.0] + [(i + 0.5) * BW for i in range(nx)] + [nx * BW]
+            for xa, xb in zip(xs[:-1], xs[1:]):
+                m.block(xa, y0, xb, y1, dsphere=BH)
     m.engines(gravity=(0, -G, 0), damping=0.2)
     return m
 
