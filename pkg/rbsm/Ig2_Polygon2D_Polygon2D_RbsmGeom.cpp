@@ -200,12 +200,10 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	// back to the world frame: x ↦ x1 + R(θ1) x for points, R(θ1) for directions
 	auto toWorldDir   = [&](const Vector2r& v) { return Vector2r(cos1 * v.x() - sin1 * v.y(), sin1 * v.x() + cos1 * v.y()); };
 	c.normal          = toWorldDir(c.normal);
-	c.tangent         = Vector2r(-c.normal.y(), c.normal.x()); // = R(θ1) of the frame's tangent, bit for bit
 	c.p0              = state1.pos.head<2>() + toWorldDir(c.p0);
 	c.p1              = state1.pos.head<2>() + toWorldDir(c.p1);
 
 	g->normal     = c.normal;
-	g->tangent    = c.tangent;
 	g->p0         = c.p0;
 	g->p1         = c.p1;
 	g->length     = c.length;
@@ -268,12 +266,12 @@ std::vector<Real> RbsmGeom::pyNormalVelocity() const
 }
 std::vector<Real> RbsmGeom::pyShearVelocity() const
 {
-	return perPoint(*this, [k = kinematics(), this](int, Real s) { return k.velocity(s).dot(tangent); });
+	return perPoint(*this, [k = kinematics(), this](int, Real s) { return k.velocity(s).dot(tangent()); });
 }
 std::vector<Real> RbsmGeom::pyShearIncrement() const
 {
 	const Real dt = Omega::instance().getScene()->dt;
-	return perPoint(*this, [k = kinematics(), dt, this](int, Real s) { return k.velocity(s).dot(tangent) * dt; });
+	return perPoint(*this, [k = kinematics(), dt, this](int, Real s) { return k.velocity(s).dot(tangent()) * dt; });
 }
 
 } // namespace yade

@@ -49,13 +49,14 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	bool           carries = false;
 	// The law samples the relative motion along the segment (linear, RbsmGeom) at its points.
 	const rbsm::SegmentKinematics kin = g.kinematics();
+	const Vector2r                tangent = g.tangent();
 	const Real                    dt  = scene->dt;
 	for (int k = 0; k < n; k++) {
 		const Real                   s   = g.rule->s[k];
 		const Real                   a   = g.rule->w[k] * area;
 		const Vector2r               v   = kin.velocity(s);
 		const Real                   vn  = -v.dot(g.normal); // closing is positive, like the overlap
-		const Real                   vs  = v.dot(g.tangent);
+		const Real                   vs  = v.dot(tangent);
 		rbsm::JointPointState&       st  = p.points[k].joint;
 		const rbsm::JointPointResult r   = rbsm::updateJointPoint(st, params, kin.overlap(s), vs * dt, a, scene->trackEnergy);
 		p.points[k].normalTraction       = r.normalTraction;
@@ -71,8 +72,8 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 			fs += ds;
 			viscous += (dn * vn - ds * vs) * dt;
 		}
-		carries = carries || !st.open;
-		const Vector2r f = fn * g.normal + fs * g.tangent;
+		carries |= !st.open;
+		const Vector2r f = fn * g.normal + fs * tangent;
 		force += f;
 		momentP0 += s * cross(seg, f); // (x_k − p0) × f, x_k − p0 = s_k (p1 − p0)
 		elastic += r.elasticEnergy;

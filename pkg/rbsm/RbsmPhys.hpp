@@ -72,15 +72,15 @@ public:
 		((Real, tanPhi, 0, , "tan φ of the joint friction angle."))
 		((Real, tensileStrength, 0, , "Tensile strength σt of the joint while intact [Pa]."))
 		((Real, dampingCoefficient, 0, Attr::readonly, "Viscous traction per relative velocity [Pa·s/m] (from the law's dampingRatio; saved, so that RbsmTimeStepper.estimate() of a loaded scene is right before its first step)."))
+		((Real, normalForce, 0, Attr::readonly, "Resultant normal force of the joint [N] (> 0 compression), Σ σn_k a_k."))
+		((Real, shearForce, 0, Attr::readonly, "Resultant shear force of the joint [N] along the contact tangent, Σ τ_k a_k."))
+		((Real, strength, 0, Attr::readonly, "Shear strength of the joint at the current normal stress, Σ (c_k + σn_k tanφ) a_k [N] (c_k = 0 where broken)."))
+		((Real, plasticDissipation, 0, Attr::readonly, "Energy dissipated by slip on this joint since it formed [J]."))
 		((std::vector<Real>, shearTraction, , Attr::hidden, "Saved form of the shear traction τ_k of each point [Pa] (see the property of that name)."))
 		((std::vector<Real>, normalTraction, , Attr::hidden, "Saved form of the normal traction σn_k of each point [Pa]."))
 		((Flags, intact, , Attr::hidden, "Saved form of intactPoints."))
 		((Flags, slipping, , Attr::hidden, "Saved form of slippingPoints."))
-		((Flags, open, , Attr::hidden, "Saved form of openPoints."))
-		((Real, normalForce, 0, Attr::readonly, "Resultant normal force of the joint [N] (> 0 compression), Σ σn_k a_k."))
-		((Real, shearForce, 0, Attr::readonly, "Resultant shear force of the joint [N] along the contact tangent, Σ τ_k a_k."))
-		((Real, strength, 0, Attr::readonly, "Shear strength of the joint at the current normal stress, Σ (c_k + σn_k tanφ) a_k [N] (c_k = 0 where broken)."))
-		((Real, plasticDissipation, 0, Attr::readonly, "Energy dissipated by slip on this joint since it formed [J].")),
+		((Flags, open, , Attr::hidden, "Saved form of openPoints.")),
 		/*ctor*/ createIndex();,
 		/*py*/
 		.add_property("shearTraction", &RbsmPhys::pyShearTraction, &RbsmPhys::pySetShearTraction, "Shear traction τ_k at each integration point [Pa] (incremental elastic, returned to the Mohr-Coulomb surface on slip); may be set, one value per point.")

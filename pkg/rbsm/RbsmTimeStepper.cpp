@@ -53,7 +53,7 @@ Real RbsmTimeStepper::estimate()
 		c.body1             = ends[0];
 		c.body2             = ends[1];
 		c.normal            = g->normal;
-		c.tangent           = g->tangent;
+		c.tangent           = g->tangent();
 		c.kn                = p->kn;
 		c.ks                = p->ks;
 		c.points.clear(), c.areas.clear(); // (their capacity is kept)

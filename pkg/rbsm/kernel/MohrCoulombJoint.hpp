@@ -18,6 +18,7 @@
 
 #include <pkg/rbsm/kernel/Types.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rbsm {
@@ -73,13 +74,41 @@ namespace detail {
 	}
 } // namespace detail
 
+namespace detail {
+	/// Rules 1, 3 and 4 for a broken (or cohesionless) point: friction only. The same arithmetic as
+	/// the general path, written without data-dependent branches: in a settling assembly points flip
+	/// between stick and slip, and joints between open and closed, from step to step, and a
+	/// mispredicted branch costs more than computing both outcomes (ternaries on doubles, std::clamp).
+	inline JointPointResult frictionalPoint(JointPointState& s, const JointParams& p, Real deltaN, Real dus, Real area, bool withEnergy)
+	{
+		const bool closed = deltaN > 0; // rule 3: a broken point carries nothing unless in compression
+		const Real sn     = closed ? p.kn * deltaN : Real(0);
+		const Real trial  = closed ? s.shearTraction - p.ks * dus : Real(0);
+		const Real tmax   = sn * p.tanPhi;
+		const Real excess = std::abs(trial) - tmax; // > 0: beyond the friction surface, slips (rule 4)
+		const Real tau    = std::clamp(trial, -tmax, tmax);
+		s.shearTraction   = tau;
+		s.open            = !closed;
+		s.slipping        = excess > 0;
+		JointPointResult r;
+		r.normalTraction = sn;
+		r.shearTraction  = tau;
+		r.normalForce    = sn * area;
+		r.shearForce     = tau * area;
+		// plastic slip (|trial| − tmax)/ks, dissipated against the friction tmax
+		r.dissipated = (excess > 0 && p.ks > 0) ? tmax * (excess / p.ks) * area : Real(0);
+		if (withEnergy) r.elasticEnergy = ((p.kn > 0 ? sn * sn / (2 * p.kn) : 0) + (p.ks > 0 ? tau * tau / (2 * p.ks) : 0)) * area;
+		return r;
+	}
+} // namespace detail
+
 inline JointPointResult updateJointPoint(JointPointState& s, const JointParams& p, Real deltaN, Real dus, Real area, bool withEnergy)
 {
 	JointPointResult r;
 	// Cohesionless joints (the landslide scenes of the seed, Table 1) skip all strength logic.
 	if (s.intact && p.cohesion == 0 && p.tensileStrength == 0) s.intact = false;
 
-	if (!s.intact && deltaN <= 0) return detail::openPoint(s);
+	if (!s.intact) return detail::frictionalPoint(s, p, deltaN, dus, area, withEnergy);
 
 	Real sn = p.kn * deltaN;
 	if (s.intact && sn < -p.tensileStrength) {
