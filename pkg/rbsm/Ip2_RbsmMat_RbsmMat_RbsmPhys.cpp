@@ -50,14 +50,14 @@ namespace {
 	{
 		boost::python::list l;
 		for (int k = 0; k < p.nPoints; k++)
-			l.append(f(p.points[k]));
+			l.append(f(p.point(k)));
 		return l;
 	}
 	template <class F> std::vector<Real> pointValues(const RbsmPhys& p, F f)
 	{
 		std::vector<Real> v(p.nPoints);
 		for (int k = 0; k < p.nPoints; k++)
-			v[k] = f(p.points[k]);
+			v[k] = f(p.point(k));
 		return v;
 	}
 }
@@ -76,7 +76,7 @@ void RbsmPhys::pySetShearTraction(const std::vector<Real>& tau)
 	for (int k = 0; k < nPoints; k++)
 		if (!std::isfinite(tau[k])) throw std::invalid_argument("RbsmPhys.shearTraction: value " + std::to_string(k) + " is not finite");
 	for (int k = 0; k < nPoints; k++)
-		points[k].joint.shearTraction = tau[k];
+		point(k).joint.shearTraction = tau[k];
 }
 
 void RbsmPhys::preSave(RbsmPhys&)
@@ -85,9 +85,9 @@ void RbsmPhys::preSave(RbsmPhys&)
 	normalTraction = pyNormalTraction();
 	intact.resize(nPoints), slipping.resize(nPoints), open.resize(nPoints);
 	for (int k = 0; k < nPoints; k++) {
-		intact[k]   = points[k].joint.intact;
-		slipping[k] = points[k].joint.slipping;
-		open[k]     = points[k].joint.open;
+		intact[k]   = point(k).joint.intact;
+		slipping[k] = point(k).joint.slipping;
+		open[k]     = point(k).joint.open;
 	}
 }
 
@@ -105,7 +105,7 @@ void RbsmPhys::postLoad(RbsmPhys& self)
 	if (n > size_t(rbsm::kMaxIntegrationPoints)) throw std::invalid_argument("RbsmPhys: more than 8 integration points (" + std::to_string(n) + ")");
 	if (nPoints != int(n)) initPoints(int(n), true);
 	for (size_t k = 0; k < n; k++) {
-		Point& q = points[k];
+		Point& q = point(k);
 		if (!shearTraction.empty()) q.joint.shearTraction = shearTraction[k];
 		if (!normalTraction.empty()) q.normalTraction = normalTraction[k];
 		if (!intact.empty()) q.joint.intact = intact[k] != 0;

@@ -24,10 +24,10 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		        + std::to_string(p.nPoints) + " integration points, its RbsmGeom " + std::to_string(n));
 	if (g.lost) { // the geometry found the blocks apart: every point breaks and opens, the joint goes
 		for (int k = 0; k < n; k++) {
-			rbsm::JointPointState& st = p.points[k].joint;
+			rbsm::JointPointState& st = p.point(k).joint;
 			st.intact = st.slipping = false;
 			st.open                 = true;
-			st.shearTraction = p.points[k].normalTraction = 0;
+			st.shearTraction = p.point(k).normalTraction = 0;
 		}
 		p.normalForce = p.shearForce = p.strength = 0;
 		return false;
@@ -51,15 +51,16 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	const rbsm::SegmentKinematics kin = g.kinematics();
 	const Vector2r                tangent = g.tangent();
 	const Real                    dt  = scene->dt;
+	RbsmPhys::Point* const        pts = p.pointData();
 	for (int k = 0; k < n; k++) {
 		const Real                   s   = g.rule->s[k];
 		const Real                   a   = g.rule->w[k] * area;
 		const Vector2r               v   = kin.velocity(s);
 		const Real                   vn  = -v.dot(g.normal); // closing is positive, like the overlap
 		const Real                   vs  = v.dot(tangent);
-		rbsm::JointPointState&       st  = p.points[k].joint;
+		rbsm::JointPointState&       st  = pts[k].joint;
 		const rbsm::JointPointResult r   = rbsm::updateJointPoint(st, params, kin.overlap(s), vs * dt, a, scene->trackEnergy);
-		p.points[k].normalTraction       = r.normalTraction;
+		pts[k].normalTraction            = r.normalTraction;
 		Real fn = r.normalForce, fs = r.shearForce;
 		if (damped && !st.open) { // no damping force across an open joint
 			// shear damping only on the elastic branch: a slipping point is at its frictional limit

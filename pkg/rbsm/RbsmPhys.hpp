@@ -6,6 +6,7 @@
 #include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
 
 #include <array>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -14,34 +15,44 @@ namespace yade {
 class RbsmPhys : public IPhys {
 public:
 	/// The state of one integration point: the law's (rbsm::JointPointState: shear traction, intact,
-	/// slipping, open) and the normal traction it found. Kept inline, up to
-	/// rbsm::kMaxIntegrationPoints, so that a joint's state is one block of memory with the joint.
+	/// slipping, open) and the normal traction it found.
 	struct Point {
 		rbsm::JointPointState joint;
 		Real                  normalTraction = 0;
 	};
-	std::array<Point, rbsm::kMaxIntegrationPoints> points {};
-	int                                            nPoints = 0; ///< how many of points are in use (the geometry's nIP)
+	/// A joint's points live in the joint itself up to kInlinePoints (Ig2's default nIP = 2: one block of
+	/// memory with the joint, no other), and all in one heap block of their own beyond (nIP 3..8), so a
+	/// scene pays only for the points it asked for.
+	static constexpr int             kInlinePoints = 2;
+	std::array<Point, kInlinePoints> inlinePoints {};
+	std::unique_ptr<Point[]>         morePoints; ///< all the points when there are more than kInlinePoints
+	int                              nPoints = 0; ///< how many points (the geometry's nIP)
+	Point*                           pointData() { return morePoints ? morePoints.get() : inlinePoints.data(); }
+	const Point*                     pointData() const { return morePoints ? morePoints.get() : inlinePoints.data(); }
+	Point&                           point(int k) { return pointData()[k]; }
+	const Point&                     point(int k) const { return pointData()[k]; }
 
 	//! Sets up n points, all intact or all broken (Ip2, when the joint forms).
 	void initPoints(int n, bool intact)
 	{
 		if (n < 0 || n > rbsm::kMaxIntegrationPoints) throw std::invalid_argument("RbsmPhys: 0..8 integration points (got " + std::to_string(n) + ")");
 		nPoints = n;
-		for (auto& q : points) q = Point {};
-		for (int k = 0; k < n; k++) points[k].joint.intact = intact;
+		inlinePoints.fill(Point {});
+		morePoints.reset(n > kInlinePoints ? new Point[n] : nullptr);
+		for (int k = 0; k < n; k++)
+			point(k).joint.intact = intact;
 	}
 	//! Breaks the joint at every integration point (no cohesion, no tension): a pre-existing crack.
 	void breakJoint()
 	{
 		for (int k = 0; k < nPoints; k++)
-			points[k].joint.intact = false;
+			point(k).joint.intact = false;
 	}
 	template <class F> int countPoints(F f) const
 	{
 		int c = 0;
 		for (int k = 0; k < nPoints; k++)
-			c += f(points[k].joint) ? 1 : 0;
+			c += f(point(k).joint) ? 1 : 0;
 		return c;
 	}
 	int nIntact() const { return countPoints([](const rbsm::JointPointState& j) { return j.intact; }); }

@@ -62,6 +62,15 @@ def test_slides_with_closed_form_acceleration(psi):
     assert r["a"] == pytest.approx(a_cf, rel=0.01)
 
 
+def test_slides_with_closed_form_acceleration_four_points():
+    """The same slide with nIP = 4: a joint of more than two points keeps them in a heap block of its own
+    (RbsmPhys.morePoints), the law reads them there."""
+    r = run_scene("incline", {"psi": 40, "phi": PHI, "nIP": 4})
+    a_cf = a_closed_form(40)
+    print("psi=40, nIP=4: a_num=%.6g a_cf=%.6g rel.err=%.2e" % (r["a"], a_cf, r["a"] / a_cf - 1))
+    assert r["a"] == pytest.approx(a_cf, rel=0.01)
+
+
 C, L, H = 787.0, 4.0, 0.2   # psi_c = 40.0 deg, psi_1 = 38.44 deg
 
 

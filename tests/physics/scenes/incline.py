@@ -1,5 +1,5 @@
 """Block on an incline (gravity tilted by psi): ground 100 x 1 m fixed, block L x H on top.
-params: psi (deg), phi (deg), c (Pa, bonded joint if > 0), L, H, dt, mode:
+params: psi (deg), phi (deg), c (Pa, bonded joint if > 0), L, H, dt, nIP (Ig2, default 2), mode:
   'sudden': gravity tilted from the start, run `steps`; returns the least-squares acceleration of the
             block's x velocity over the second half and its displacement.
   'ramp':   settle under vertical gravity (settle steps), then tilt gravity linearly from 0 to psi over
@@ -23,7 +23,7 @@ b = O.bodies[O.bodies.append(polygon2d([(0, 0), (L, 0), (L, H), (0, H)], mat))]
 ip2 = Ip2_RbsmMat_RbsmMat_RbsmPhys(setCohesionNow=(c > 0))
 newton = NewtonIntegrator(gravity=(0, -g, 0), damping=0)
 O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polygon2D_Aabb()]),
-             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom(updateTolerance=p.get("ut", 0.0))], [ip2], [Law2_RbsmGeom_RbsmPhys_MohrCoulomb(dampingRatio=0.3)]),
+             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom(updateTolerance=p.get("ut", 0.0), nIP=p.get("nIP", 2))], [ip2], [Law2_RbsmGeom_RbsmPhys_MohrCoulomb(dampingRatio=0.3)]),
              newton]
 O.dt = p.get("dt", 1e-5)
 x0 = b.state.pos[0]
