@@ -2,8 +2,9 @@
 #include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
 
 #include <algorithm>
-#include <stdexcept>
-#include <string>
+#include <atomic>
+#include <iostream>
+#include <sstream>
 
 namespace yade {
 
@@ -11,6 +12,20 @@ YADE_PLUGIN((Law2_RbsmGeom_RbsmPhys_MohrCoulomb));
 
 namespace {
 	inline Real cross(const Vector2r& a, const Vector2r& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+	// Reported, not thrown: the law runs inside YADE's OpenMP loop, which an exception cannot leave
+	// (std::terminate). The first five cases are shown.
+	std::atomic<int> mismatchReports { 0 };
+	void reportPointMismatch(const Interaction& I, int physPoints, int geomPoints)
+	{
+		const int k = mismatchReports.fetch_add(1);
+		if (k >= 5) return;
+		std::ostringstream msg;
+		msg << "yade-rbsm: WARNING: Law2_RbsmGeom_RbsmPhys_MohrCoulomb: interaction #" << I.getId1() << "+#" << I.getId2() << ": RbsmPhys has "
+		    << physPoints << " integration points, its RbsmGeom " << geomPoints << "; the interaction is removed (made again by Ip2 if the blocks touch)"
+		    << (k == 4 ? "; further such warnings are not shown" : "") << "\n";
+		std::cerr << msg.str();
+	}
 }
 
 bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
@@ -18,10 +33,10 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	RbsmGeom& g = static_cast<RbsmGeom&>(*ig);
 	RbsmPhys& p = static_cast<RbsmPhys&>(*ip);
 	const int n = g.nPoints();
-	if (p.nPoints != n)
-		throw std::runtime_error(
-		        "Law2_RbsmGeom_RbsmPhys_MohrCoulomb: interaction #" + std::to_string(I->getId1()) + "+#" + std::to_string(I->getId2()) + ": RbsmPhys has "
-		        + std::to_string(p.nPoints) + " integration points, its RbsmGeom " + std::to_string(n));
+	if (p.nPoints != n) { // an RbsmPhys set by hand that does not fit its contact
+		reportPointMismatch(*I, p.nPoints, n);
+		return false; // YADE erases the interaction; the contact is made again, with Ip2's joint
+	}
 	if (g.lost) { // the geometry found the blocks apart: every point breaks and opens, the joint goes
 		for (int k = 0; k < n; k++) {
 			rbsm::JointPointState& st = p.point(k).joint;

@@ -11,7 +11,7 @@ import math
 
 import pytest
 
-from yaderun import run_ok
+from yaderun import results, run_ok, run_yade
 
 SCENE = """
 from yade_rbsm import polygon2d
@@ -94,3 +94,20 @@ report(before=before, after=after)
 """ % (ext, ext))[0]
     assert r["after"] == r["before"]
     assert r["after"][2] == [False] * 3 and r["after"][0] == [0.5, -0.25, 0.125]
+
+
+def test_phys_with_another_number_of_points_is_refused_by_name():
+    """An RbsmPhys set by hand with 3 points on a 2-point contact: the law names the interaction and both counts on
+    stderr and removes the interaction (an exception cannot leave YADE's OpenMP loop); the blocks still touch, so
+    the contact is made again with Ip2's 2-point joint. No crash, no reading past the points."""
+    p = run_yade("import math\n" + SCENE % 2 + """
+i.phys = RbsmPhys(kn=p.kn, ks=p.ks, tanPhi=p.tanPhi, shearTraction=[0.0, 0.0, 0.0])
+O.step()
+O.step()
+j = O.interactions[lower, upper]
+report(real=j.isReal, n=len(j.phys.shearTraction), kn=j.phys.kn)
+""")
+    assert p.returncode == 0, p.stderr[-3000:]
+    assert "interaction #0+#1: RbsmPhys has 3 integration points, its RbsmGeom 2" in p.stderr, p.stderr[-3000:]
+    r = results(p)[0]
+    assert r["real"] and r["n"] == 2 and r["kn"] > 0
