@@ -10,6 +10,7 @@
 #include <atomic>
 #include <iostream>
 #include <limits>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -84,6 +85,25 @@ namespace {
 		return s.vel.head<2>() + s.angVel.z() * Vector2r(-r.y(), r.x());
 	}
 
+	// Periodic cells are not supported. Reported, not thrown (an exception cannot leave YADE's OpenMP
+	// loop: std::terminate), and the run is stopped at the end of this step, so that no step runs with
+	// the contacts across the cell's boundary missing.
+	std::atomic<int> periodicReports { 0 };
+	std::mutex       periodicStop;
+	void reportPeriodic(const Interaction& I, Scene& scene)
+	{
+		{
+			const std::lock_guard<std::mutex> lock(periodicStop); // several threads may get here in one step
+			scene.stopAtIter = scene.iter + 1;
+		}
+		if (periodicReports.fetch_add(1) >= 5) return;
+		std::ostringstream msg;
+		msg << "yade-rbsm: ERROR: Ig2_Polygon2D_Polygon2D_RbsmGeom: bodies #" << I.getId1() << " and #" << I.getId2()
+		    << " meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported; the run stops after step "
+		    << scene.iter << "\n";
+		std::cerr << msg.str();
+	}
+
 	// Overlaps deeper than this fraction of the smaller block are outside what the small-strain
 	// joint springs represent: reported (a few times per run), like UDEC's "contact overlap too great".
 	constexpr Real deepOverlap = 0.05;
@@ -111,7 +131,10 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
         const bool&              force,
         const shared_ptr<Interaction>& I)
 {
-	if (shift2 != Vector3r::Zero()) throw std::runtime_error("Ig2_Polygon2D_Polygon2D_RbsmGeom: periodic cells are not supported");
+	if (shift2 != Vector3r::Zero()) { // a contact across a periodic cell's boundary
+		reportPeriodic(*I, *scene);
+		return false;
+	}
 	const Polygon2D& A = static_cast<const Polygon2D&>(*s1);
 	const Polygon2D& B = static_cast<const Polygon2D&>(*s2);
 	if (A.vertices.empty() || B.vertices.empty()) return false; // reported by Bo1_Polygon2D_Aabb

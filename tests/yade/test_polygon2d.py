@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from yaderun import run_ok, run_yade
+from yaderun import results, run_ok, run_yade
 
 SQUARE = "[(-1, -1), (1, -1), (1, 1), (-1, 1)]"  # side 2: area 4, J = a^4/6 = 16/6
 # right triangle (0,0),(3,0),(0,3) moved to its centroid (1,1)
@@ -159,3 +159,27 @@ def test_script_error_fails_the_run():
     """The helper (and so every test) sees a failing yade script as a failure."""
     p = run_yade("raise RuntimeError('expected failure')")
     assert p.returncode != 0 and "expected failure" in p.stdout + p.stderr
+
+
+def test_periodic_cell_is_refused_without_a_crash():
+    """Two blocks touching across a periodic cell's boundary: not supported. The geometry functor names the bodies
+    on stderr and stops the run after the step (an exception cannot leave YADE's OpenMP loop; before, YADE died in
+    std::terminate)."""
+    p = run_yade("""
+from yade_rbsm.blocks import polygon2d
+mat = RbsmMat(young=1e9, poisson=0.2, density=2000, frictionAngle=0.5)
+O.materials.append(mat)
+O.periodic = True
+O.cell.setBox(2, 2, 10)
+a = O.bodies.append(polygon2d([(0.05, 0.5), (0.55, 0.5), (0.55, 1.0), (0.05, 1.0)], mat))
+b = O.bodies.append(polygon2d([(1.55, 0.5), (2.0499, 0.5), (2.0499, 1.0), (1.55, 1.0)], mat))
+O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polygon2D_Aabb()], verletDist=0.01),
+             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom()], [Ip2_RbsmMat_RbsmMat_RbsmPhys()], [Law2_RbsmGeom_RbsmPhys_MohrCoulomb()]),
+             NewtonIntegrator()]
+O.dt = 1e-5
+O.run(10, True)
+report(iter=O.iter, contacts=O.interactions.countReal())
+""", jobs=2)
+    assert p.returncode == 0, p.stderr[-3000:]
+    assert "bodies #0 and #1 meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported" in p.stderr, p.stderr[-3000:]
+    assert results(p) == [{"iter": 1, "contacts": 0}]
