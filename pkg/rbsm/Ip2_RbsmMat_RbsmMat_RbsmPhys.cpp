@@ -2,13 +2,36 @@
 #include <pkg/rbsm/RbsmGeom.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
 
+#include <core/Scene.hpp>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <iostream>
 #include <iterator>
+#include <mutex>
+#include <sstream>
 
 namespace yade {
 
 YADE_PLUGIN((RbsmPhys)(Ip2_RbsmMat_RbsmMat_RbsmPhys));
+
+namespace {
+	std::atomic<int> mixedReports { 0 };
+	std::mutex       mixedStop;
+	void             reportMixedPlaneStates(const Interaction& I, Scene& scene)
+	{
+		{
+			const std::lock_guard<std::mutex> lock(mixedStop); // several threads may get here in one step
+			scene.stopAtIter = scene.iter + 1;
+		}
+		if (mixedReports.fetch_add(1) >= 5) return;
+		std::ostringstream msg;
+		msg << "yade-rbsm: ERROR: Ip2_RbsmMat_RbsmMat_RbsmPhys: bodies #" << I.getId1() << " and #" << I.getId2()
+		    << " mix plane strain and plane stress materials (RbsmMat.planeStrain); the run stops after step " << scene.iter << "\n";
+		std::cerr << msg.str();
+	}
+}
 
 void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shared_ptr<Material>& b2, const shared_ptr<Interaction>& I)
 {
@@ -17,10 +40,16 @@ void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shar
 	if (!g) throw std::runtime_error("Ip2_RbsmMat_RbsmMat_RbsmPhys: the interaction has no RbsmGeom (use Ig2_Polygon2D_Polygon2D_RbsmGeom)");
 	const RbsmMat& m1 = static_cast<const RbsmMat&>(*b1);
 	const RbsmMat& m2 = static_cast<const RbsmMat&>(*b2);
-	if (m1.planeStrain != m2.planeStrain)
-		throw std::invalid_argument(
-		        "Ip2_RbsmMat_RbsmMat_RbsmPhys: bodies #" + std::to_string(I->getId1()) + " and #" + std::to_string(I->getId2())
-		        + " mix plane strain and plane stress materials");
+	if (m1.planeStrain != m2.planeStrain) {
+		// No joint stiffness follows from two plane states. Reported, not thrown (an exception cannot
+		// leave YADE's OpenMP loop: std::terminate); the joint carries nothing in this step and the run
+		// stops after it (Scene.stopAtIter), so that no step runs with the joint missing.
+		reportMixedPlaneStates(*I, *scene);
+		auto p = shared_ptr<RbsmPhys>(new RbsmPhys); // kn = ks = 0, every point broken
+		p->initPoints(g->nPoints(), false);
+		I->phys = p;
+		return;
+	}
 
 	// setCohesionNow applies to all contacts made in the step in which it is first seen.
 	if (setCohesionNow && cohesionIter < 0) cohesionIter = scene->iter;

@@ -111,3 +111,27 @@ report(real=j.isReal, n=len(j.phys.shearTraction), kn=j.phys.kn)
     assert "interaction #0+#1: RbsmPhys has 3 integration points, its RbsmGeom 2" in p.stderr, p.stderr[-3000:]
     r = results(p)[0]
     assert r["real"] and r["n"] == 2 and r["kn"] > 0
+
+
+def test_mixed_plane_states_stop_the_run_without_a_crash():
+    """A plane-strain block touching a plane-stress one: no joint stiffness follows from two plane states. Ip2 names
+    the bodies on stderr, gives the joint no stiffness for that step and stops the run after it (before, a throw
+    inside YADE's OpenMP loop ended YADE in std::terminate)."""
+    p = run_yade("""
+from yade_rbsm import polygon2d
+strain = RbsmMat(young=1e9, poisson=0.2, density=2000, frictionAngle=0.5, planeStrain=True)
+stress = RbsmMat(young=1e9, poisson=0.2, density=2000, frictionAngle=0.5, planeStrain=False)
+O.materials.append(strain); O.materials.append(stress)
+lower = O.bodies.append(polygon2d([(0, 0), (1, 0), (1, 1), (0, 1)], strain, fixed=True))
+upper = O.bodies.append(polygon2d([(0, 1 - 1e-4), (1, 1 - 1e-4), (1, 2 - 1e-4), (0, 2 - 1e-4)], stress))
+O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polygon2D_Aabb()], verletDist=0.01),
+             InteractionLoop([Ig2_Polygon2D_Polygon2D_RbsmGeom()], [Ip2_RbsmMat_RbsmMat_RbsmPhys()], [Law2_RbsmGeom_RbsmPhys_MohrCoulomb()]),
+             NewtonIntegrator(gravity=(0, -9.81, 0))]
+O.dt = 1e-5
+O.run(10, True)
+i = O.interactions[lower, upper]
+report(iter=O.iter, kn=i.phys.kn, fy=O.forces.f(upper)[1])
+""", jobs=2)
+    assert p.returncode == 0, p.stderr[-3000:]
+    assert "bodies #0 and #1 mix plane strain and plane stress materials (RbsmMat.planeStrain); the run stops after step 0" in p.stderr, p.stderr[-3000:]
+    assert results(p) == [{"iter": 1, "kn": 0.0, "fy": 0.0}]
