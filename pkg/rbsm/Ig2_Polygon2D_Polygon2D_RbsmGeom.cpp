@@ -1,5 +1,6 @@
 #include <pkg/rbsm/Ig2_Polygon2D_Polygon2D_RbsmGeom.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
+#include <pkg/rbsm/StepReport.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
@@ -8,9 +9,7 @@
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
 
 #include <atomic>
-#include <iostream>
 #include <limits>
-#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -85,40 +84,36 @@ namespace {
 		return s.vel.head<2>() + s.angVel.z() * Vector2r(-r.y(), r.x());
 	}
 
-	// Periodic cells are not supported. Reported, not thrown (an exception cannot leave YADE's OpenMP
-	// loop: std::terminate), and the run is stopped at the end of this step, so that no step runs with
-	// the contacts across the cell's boundary missing.
+	// Periodic cells are not supported: reported (StepReport.hpp) and the run stopped at the end of
+	// this step, so that no step runs with the contacts across the cell's boundary missing.
 	std::atomic<int> periodicReports { 0 };
-	std::mutex       periodicStop;
-	void reportPeriodic(const Interaction& I, Scene& scene)
+	void             reportPeriodic(const Interaction& I, Scene& scene)
 	{
-		{
-			const std::lock_guard<std::mutex> lock(periodicStop); // several threads may get here in one step
-			scene.stopAtIter = scene.iter + 1;
-		}
-		if (periodicReports.fetch_add(1) >= 5) return;
-		std::ostringstream msg;
-		msg << "yade-rbsm: ERROR: Ig2_Polygon2D_Polygon2D_RbsmGeom: bodies #" << I.getId1() << " and #" << I.getId2()
-		    << " meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported; the run stops after step "
-		    << scene.iter << "\n";
-		std::cerr << msg.str();
+		rbsm_report::stopAfterThisStep(scene);
+		rbsm_report::limited(periodicReports, [&](bool last) {
+			std::ostringstream msg;
+			msg << "yade-rbsm: ERROR: Ig2_Polygon2D_Polygon2D_RbsmGeom: bodies #" << I.getId1() << " and #" << I.getId2()
+			    << " meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported; the run stops after step "
+			    << scene.iter << (last ? "; further such errors are not shown" : "");
+			return msg.str();
+		});
 	}
 
 	// Overlaps deeper than this fraction of the smaller block are outside what the small-strain
 	// joint springs represent: reported (a few times per run), like UDEC's "contact overlap too great".
-	constexpr Real deepOverlap = 0.05;
+	constexpr Real   deepOverlap = 0.05;
 	std::atomic<int> deepOverlapReports { 0 };
-	void reportDeepOverlap(const Interaction& I, Real overlap, Real size, bool atSetUp, long iter)
+	void             reportDeepOverlap(const Interaction& I, Real overlap, Real size, bool atSetUp, long iter)
 	{
-		const int n = deepOverlapReports.fetch_add(1);
-		if (n >= 5) return;
-		std::ostringstream msg;
-		msg << "yade-rbsm: WARNING: bodies #" << I.getId1() << " and #" << I.getId2() << " overlap by " << overlap << " m, "
-		    << 100 * overlap / size << " % of the smaller block's diameter, at step " << iter
-		    << (atSetUp ? " when their contact is made (blocks placed overlapping? check the input geometry)"
-		                : " (impact too violent for the time step, or blocks too soft?)")
-		    << (n == 4 ? "; further overlap warnings are not shown" : "") << "\n";
-		std::cerr << msg.str();
+		rbsm_report::limited(deepOverlapReports, [&](bool last) {
+			std::ostringstream msg;
+			msg << "yade-rbsm: WARNING: bodies #" << I.getId1() << " and #" << I.getId2() << " overlap by " << overlap << " m, "
+			    << 100 * overlap / size << " % of the smaller block's diameter, at step " << iter
+			    << (atSetUp ? " when their contact is made (blocks placed overlapping? check the input geometry)"
+			                : " (impact too violent for the time step, or blocks too soft?)")
+			    << (last ? "; further overlap warnings are not shown" : "");
+			return msg.str();
+		});
 	}
 }
 

@@ -2,14 +2,11 @@
 #include <pkg/rbsm/RbsmGeom.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
 
-#include <core/Scene.hpp>
+#include <pkg/rbsm/StepReport.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <iostream>
 #include <iterator>
-#include <mutex>
 #include <sstream>
 
 namespace yade {
@@ -18,18 +15,16 @@ YADE_PLUGIN((RbsmPhys)(Ip2_RbsmMat_RbsmMat_RbsmPhys));
 
 namespace {
 	std::atomic<int> mixedReports { 0 };
-	std::mutex       mixedStop;
 	void             reportMixedPlaneStates(const Interaction& I, Scene& scene)
 	{
-		{
-			const std::lock_guard<std::mutex> lock(mixedStop); // several threads may get here in one step
-			scene.stopAtIter = scene.iter + 1;
-		}
-		if (mixedReports.fetch_add(1) >= 5) return;
-		std::ostringstream msg;
-		msg << "yade-rbsm: ERROR: Ip2_RbsmMat_RbsmMat_RbsmPhys: bodies #" << I.getId1() << " and #" << I.getId2()
-		    << " mix plane strain and plane stress materials (RbsmMat.planeStrain); the run stops after step " << scene.iter << "\n";
-		std::cerr << msg.str();
+		rbsm_report::stopAfterThisStep(scene);
+		rbsm_report::limited(mixedReports, [&](bool last) {
+			std::ostringstream msg;
+			msg << "yade-rbsm: ERROR: Ip2_RbsmMat_RbsmMat_RbsmPhys: bodies #" << I.getId1() << " and #" << I.getId2()
+			    << " mix plane strain and plane stress materials (RbsmMat.planeStrain); the run stops after step " << scene.iter
+			    << (last ? "; further such errors are not shown" : "");
+			return msg.str();
+		});
 	}
 }
 
@@ -41,9 +36,9 @@ void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shar
 	const RbsmMat& m1 = static_cast<const RbsmMat&>(*b1);
 	const RbsmMat& m2 = static_cast<const RbsmMat&>(*b2);
 	if (m1.planeStrain != m2.planeStrain) {
-		// No joint stiffness follows from two plane states. Reported, not thrown (an exception cannot
-		// leave YADE's OpenMP loop: std::terminate); the joint carries nothing in this step and the run
-		// stops after it (Scene.stopAtIter), so that no step runs with the joint missing.
+		// No joint stiffness follows from two plane states. Reported, not thrown (StepReport.hpp); the
+		// joint carries nothing in this step and the run stops after it, so that no step runs with the
+		// joint missing.
 		reportMixedPlaneStates(*I, *scene);
 		auto p = shared_ptr<RbsmPhys>(new RbsmPhys); // kn = ks = 0, every point broken
 		p->initPoints(g->nPoints(), false);

@@ -1,9 +1,9 @@
 #include <pkg/rbsm/Law2_RbsmGeom_RbsmPhys_MohrCoulomb.hpp>
 #include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
 
+#include <pkg/rbsm/StepReport.hpp>
+
 #include <algorithm>
-#include <atomic>
-#include <iostream>
 #include <sstream>
 
 namespace yade {
@@ -13,18 +13,17 @@ YADE_PLUGIN((Law2_RbsmGeom_RbsmPhys_MohrCoulomb));
 namespace {
 	inline Real cross(const Vector2r& a, const Vector2r& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-	// Reported, not thrown: the law runs inside YADE's OpenMP loop, which an exception cannot leave
-	// (std::terminate). The first five cases are shown.
+	// Reported, not thrown (StepReport.hpp).
 	std::atomic<int> mismatchReports { 0 };
-	void reportPointMismatch(const Interaction& I, int physPoints, int geomPoints)
+	void             reportPointMismatch(const Interaction& I, int physPoints, int geomPoints)
 	{
-		const int k = mismatchReports.fetch_add(1);
-		if (k >= 5) return;
-		std::ostringstream msg;
-		msg << "yade-rbsm: WARNING: Law2_RbsmGeom_RbsmPhys_MohrCoulomb: interaction #" << I.getId1() << "+#" << I.getId2() << ": RbsmPhys has "
-		    << physPoints << " integration points, its RbsmGeom " << geomPoints << "; the interaction is removed (made again by Ip2 if the blocks touch)"
-		    << (k == 4 ? "; further such warnings are not shown" : "") << "\n";
-		std::cerr << msg.str();
+		rbsm_report::limited(mismatchReports, [&](bool last) {
+			std::ostringstream msg;
+			msg << "yade-rbsm: WARNING: Law2_RbsmGeom_RbsmPhys_MohrCoulomb: interaction #" << I.getId1() << "+#" << I.getId2() << ": RbsmPhys has "
+			    << physPoints << " integration points, its RbsmGeom " << geomPoints << "; the interaction is removed (made again by Ip2 if the blocks touch)"
+			    << (last ? "; further such warnings are not shown" : "");
+			return msg.str();
+		});
 	}
 }
 

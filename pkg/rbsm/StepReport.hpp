@@ -1,0 +1,32 @@
+// Problems found while a step runs. The functors run inside YADE's OpenMP loops, which an exception
+// cannot leave (std::terminate ends YADE), so they report on stderr instead, and stop the run after
+// the step where going on would compute without part of the model.
+#pragma once
+#include <core/Scene.hpp>
+
+#include <atomic>
+#include <iostream>
+#include <mutex>
+#include <string>
+
+namespace yade {
+namespace rbsm_report {
+	/// Prints the line that message(last) makes, for the first five calls with this counter (one
+	/// counter per kind of problem); last is true for the fifth, whose line should say that further
+	/// ones are not shown. The message is made only when it is printed.
+	template <class MakeMessage> void limited(std::atomic<int>& count, MakeMessage message)
+	{
+		const int k = count.fetch_add(1);
+		if (k >= 5) return;
+		std::cerr << std::string(message(k == 4)) + "\n";
+	}
+
+	/// Stops the run at the end of the current step (Scene.stopAtIter); safe from several threads.
+	inline void stopAfterThisStep(Scene& scene)
+	{
+		static std::mutex           stop;
+		const std::lock_guard<std::mutex> lock(stop);
+		scene.stopAtIter = scene.iter + 1;
+	}
+} // namespace rbsm_report
+} // namespace yade
