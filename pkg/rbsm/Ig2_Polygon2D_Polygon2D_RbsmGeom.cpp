@@ -7,6 +7,7 @@
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 #include <pkg/rbsm/kernel/FrozenContact.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
+#include <pkg/rbsm/kernel/SegmentKinematics.hpp>
 
 #include <atomic>
 #include <limits>
@@ -75,13 +76,6 @@ namespace {
 		if (fa) return b.mass;
 		if (fb) return a.mass;
 		return a.mass * b.mass / (a.mass + b.mass);
-	}
-
-	// Velocity of the material point x of a planar rigid body: v + ω × (x − c).
-	Vector2r pointVelocity(const State& s, const Vector2r& x)
-	{
-		const Vector2r r = x - s.pos.head<2>();
-		return s.vel.head<2>() + s.angVel.z() * Vector2r(-r.y(), r.x());
 	}
 
 	// Periodic cells are not supported: reported (StepReport.hpp) and the run stopped at the end of
@@ -243,9 +237,11 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 
 	// The relative motion along the segment, which the law samples at its points (SegmentKinematics):
 	// block 2's velocity relative to block 1's at p0, v2 + ω2 × (p0 − c2) − v1 − ω1 × (p0 − c1).
-	g->d0                      = c.d0;
-	g->d1                      = c.d1;
-	g->relativeVelocity        = pointVelocity(state2, c.p0) - pointVelocity(state1, c.p0);
+	const rbsm::SegmentKinematics k = rbsm::segmentKinematics(
+	        c.d0, c.d1, c.p0, c.p1, g->centroid1, state1.vel.head<2>(), state1.angVel.z(), g->centroid2, state2.vel.head<2>(), state2.angVel.z());
+	g->d0                      = k.d0;
+	g->d1                      = k.d1;
+	g->relativeVelocity        = k.v0;
 	g->relativeAngularVelocity = state2.angVel.z() - state1.angVel.z();
 	return true;
 }
