@@ -8,8 +8,8 @@ Run (regenerates docs/benchmarks.md):
 The parent run (threads as given by -j) measures:
   (a) RBSM: a wall of NY courses of NX bricks in running bond (half bricks at the ends of odd courses, frictional
       joints) on a fixed base, settled under gravity;
-  (b) YADE spheres (FrictMat, Ig2_Sphere_Sphere_ScGeom, Law2_ScGeom_FrictPhys_CundallStrack): a simple cubic
-      stack on a wall with a similar number of real contacts, settled under gravity;
+  (b) YADE spheres (FrictMat, Ig2_Sphere_Sphere_ScGeom, Law2_ScGeom_FrictPhys_CundallStrack): a hexagonal
+      stack in a vertical plane between a floor and two side walls, a similar number of real contacts, settled under gravity;
   (c) RBSM with nIP=4 instead of 2;
   (d) RBSM with frozen contact kinematics between exact updates (Ig2 updateTolerance=UT);
 and then starts itself again with the other thread count (-j1 <-> -j2) as a child (option --child) for the
