@@ -9,6 +9,7 @@
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
 #include <pkg/rbsm/kernel/SegmentKinematics.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <limits>
 #include <sstream>
@@ -33,38 +34,23 @@ void Ig2_Polygon2D_Polygon2D_RbsmGeom::postLoad(Ig2_Polygon2D_Polygon2D_RbsmGeom
 }
 
 namespace {
-	// Vertices and outward edge normals of a block placed at pos with rotation (c, s) in the frame the
-	// contact is computed in: n vertices then n normals, in the caller's stack buffer (or the heap
-	// for blocks of more than kStackVertices vertices). The normals are the body-frame ones of
-	// Polygon2D rotated with the block: no square root.
-	constexpr int kStackVertices = 16;
-	rbsm::PolygonView placedPolygon(const Polygon2D& shape, const Vector2r& pos, Real c, Real s, rbsm::Vec2* stack, std::vector<rbsm::Vec2>& heap)
+	// A block in its own frame: its vertices and outward edge normals as stored by Polygon2D (no
+	// copy). A shape whose derived data were not made (built in C++ without postLoad) gets its normals
+	// computed into the caller's buffer (the heap beyond kStackVertices vertices).
+	constexpr int     kStackVertices = 16;
+	rbsm::PolygonView ownFramePolygon(const Polygon2D& shape, rbsm::Vec2* stack, std::vector<rbsm::Vec2>& heap)
 	{
-		const int   n   = int(shape.vertices.size());
+		const int n = int(shape.vertices.size());
+		if (shape.edgeNormals.size() == size_t(n)) return rbsm::PolygonView { shape.vertices.data(), shape.edgeNormals.data(), n };
 		rbsm::Vec2* out = stack;
 		if (n > kStackVertices) {
 			heap.resize(2 * size_t(n));
 			out = heap.data();
 		}
-		for (int i = 0; i < n; i++) {
-			const Vector2r& v = shape.vertices[i];
-			out[i]            = rbsm::Vec2(pos.x() + c * v.x() - s * v.y(), pos.y() + s * v.x() + c * v.y());
-		}
-		const std::vector<Vector2r>* normals = &shape.edgeNormals;
-		std::vector<Vector2r>        made; // a shape whose derived data were not made (built in C++ without postLoad)
-		if (normals->size() != size_t(n)) normals = &(made = rbsm::edgeNormals(shape.vertices));
-		for (int i = 0; i < n; i++) {
-			const Vector2r& e = (*normals)[i];
-			out[n + i]        = rbsm::Vec2(c * e.x() - s * e.y(), s * e.x() + c * e.y());
-		}
+		const std::vector<Vector2r> normals = rbsm::edgeNormals(shape.vertices);
+		std::copy(shape.vertices.begin(), shape.vertices.end(), out);
+		std::copy(normals.begin(), normals.end(), out + n);
 		return rbsm::PolygonView { out, out + n, n };
-	}
-
-	// A block in its own frame: its vertices and normals as they are (no copy).
-	rbsm::PolygonView ownFramePolygon(const Polygon2D& shape, rbsm::Vec2* stack, std::vector<rbsm::Vec2>& heap)
-	{
-		if (shape.edgeNormals.size() != shape.vertices.size()) return placedPolygon(shape, Vector2r::Zero(), 1, 0, stack, heap);
-		return rbsm::PolygonView { shape.vertices.data(), shape.edgeNormals.data(), int(shape.vertices.size()) };
 	}
 
 	bool isFixed(const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL; }
@@ -170,21 +156,29 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		frozen          = dMin >= -slop || dMin >= -(reach() + slop); // (reach() ≥ 0: asked only for an opening joint)
 	}
 	if (!frozen) {
-		rbsm::Vec2              stackA[2 * kStackVertices], stackB[2 * kStackVertices];
+		rbsm::Vec2              ownA[2 * kStackVertices], ownB[2 * kStackVertices];
 		std::vector<rbsm::Vec2> heapA, heapB;
-		const rbsm::PolygonView va = ownFramePolygon(A, stackA, heapA);
-		const rbsm::PolygonView vb = placedPolygon(B, rel, relCos, relSin, stackB, heapB);
+		const rbsm::PolygonView  va = ownFramePolygon(A, ownA, heapA);
+		const rbsm::PosedPolygon pb { ownFramePolygon(B, ownB, heapB), rel, relCos, relSin }; // block 2 in block 1's frame
 
-		const Real maxSeparation = reach();
-		// a potential interaction (bounding boxes overlap) whose blocks are clearly apart: no search
-		if (!g && rbsm::separatedBeyond(va, vb, maxSeparation, minSize)) return false;
-		rbsm::ContactHint hint;
-		if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
+		const Real            maxSeparation = reach();
 		const rbsm::BlockPose poseA { Vector2r::Zero(), 1, 0, A.circumradius }; // block 1's frame
 		const rbsm::BlockPose poseB { rel, relCos, relSin, B.circumradius };
-		rbsm::SearchMemory    newMemory; // a new contact's first search; kept in the geometry if it is made
-		rbsm::SearchMemory&   memory = g ? g->searchMemory : newMemory;
-		c                            = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, minSize, &poseA, &poseB, &memory);
+		rbsm::ContactHint     hint;
+		if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
+		rbsm::SearchMemory newMemory; // a new contact's first search; kept in the geometry if it is made
+		// A followed joint whose search memory certifies this step: from the few vertices it needs
+		// (rbsm::followContact, bit for bit edgeContact's result). Otherwise block 2 is placed whole.
+		if (!(g && rbsm::followContact(va, pb, maxSeparation, hint, hysteresis, minSize, poseA, poseB, g->searchMemory, c))) {
+			rbsm::Vec2              stackB[2 * kStackVertices];
+			std::vector<rbsm::Vec2> placedHeap;
+			if (pb.local.n > kStackVertices) placedHeap.resize(2 * size_t(pb.local.n));
+			const rbsm::PolygonView vb = pb.place(pb.local.n > kStackVertices ? placedHeap.data() : stackB);
+			// a potential interaction (bounding boxes overlap) whose blocks are clearly apart: no search
+			if (!g && rbsm::separatedBeyond(va, vb, maxSeparation, minSize)) return false;
+			rbsm::SearchMemory& memory = g ? g->searchMemory : newMemory;
+			c                          = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, minSize, &poseA, &poseB, &memory);
+		}
 		if (!existing && !(c.touching && c.length > 0)) return false; // no new contact
 		if (existing && !c.touching) {
 			// The blocks of an existing joint no longer face each other within reach: YADE expects the

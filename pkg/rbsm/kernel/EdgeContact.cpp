@@ -30,17 +30,55 @@ namespace {
 		T*             p_;
 	};
 
+	// How the templates below read a polygon: Arrays from the placed arrays of a PolygonView, Posed by
+	// placing a vertex or normal of a PosedPolygon when asked (the same arithmetic as its place()).
+	struct Arrays {
+		const Vec2* vs;
+		const Vec2* ns;
+		int         n;
+		const Vec2& v(int i) const { return vs[i]; }
+		const Vec2& nrm(int i) const { return ns[i]; }
+	};
+	Arrays arrays(const PolygonView& p) { return Arrays { p.v, p.nrm, p.n }; }
+	struct Posed {
+		const PosedPolygon& p;
+		int                 n;
+		Vec2                v(int i) const { return p.vertex(i); }
+		Vec2                nrm(int i) const { return p.normal(i); }
+	};
+
 	// Separation of polygon Q from edge i of P, m: the smallest signed distance of a vertex of Q
 	// in front of the edge's line (> 0: Q is entirely outside that edge).
-	Real edgeSeparation(const PolygonView& P, int i, const PolygonView& Q)
+	template <class PP, class PQ> Real edgeSeparation(const PP& P, int i, const PQ& Q)
 	{
-		const Vec2& n = P.nrm[i];
-		const Vec2& v = P.v[i];
-		Real        s = std::numeric_limits<Real>::infinity();
+		const Vec2 n = P.nrm(i);
+		const Vec2 v = P.v(i);
+		Real       s = std::numeric_limits<Real>::infinity();
 		for (int k = 0; k < Q.n; ++k)
-			s = std::min(s, n.dot(Q.v[k] - v));
+			s = std::min(s, n.dot(Q.v(k) - v));
 		return s;
 	}
+	Real edgeSeparation(const PolygonView& P, int i, const PolygonView& Q) { return edgeSeparation(arrays(P), i, arrays(Q)); }
+
+	// The same minimum where it is certified to be at the incident edge's ends (ClipCertificate::
+	// supportOnInc): the same terms in the same order, the others being larger.
+	template <class PR, class PI> Real separationAtIncident(const PR& R, int refEdge, const PI& I, int inc)
+	{
+		const int  i1 = inc + 1 < I.n ? inc + 1 : 0;
+		const Vec2 n  = R.nrm(refEdge);
+		const Vec2 v  = R.v(refEdge);
+		Real       s  = std::numeric_limits<Real>::infinity();
+		s             = std::min(s, n.dot(I.v(std::min(inc, i1)) - v));
+		return std::min(s, n.dot(I.v(std::max(inc, i1)) - v));
+	}
+
+	// Radius of the clip certificates (ClipCertificate), a fraction of the smaller block's size: larger
+	// certifies fewer clips as quiet, smaller searches again more often.
+	constexpr Real kCertificateRadius = 0.02;
+	// Facing dots within this of the threshold kParallel are recomputed at every step (an edge square
+	// to the reference one, the sides of two stacked bricks, is at the threshold); the others keep
+	// their side of it while the relative rotation's chord stays below it.
+	constexpr Real kFacingMargin = 0.05;
 
 	// |cos| below which an edge counts as parallel to a normal (round-off of unit normals).
 	constexpr Real kParallel = 1e-12;
@@ -57,6 +95,38 @@ namespace {
 		else hi = std::min(hi, root);
 	}
 
+	// The certificates of a clip that kept something (ClipCertificate, EdgeContact.hpp): from the
+	// facing dots, the incident edge's lead over the next edge and the edges facing along +nRef by
+	// more than kFacingMargin (or within it: unsure); the quiet clips found by clipOn; whether the
+	// reference edge's separation is at the incident edge's ends with every other vertex 2 radius
+	// farther. Only at a search, not in the steps between.
+	template <class PR, class PI>
+	void recordCertificate(const PR& R, const PI& I, int refEdge, int inc, const Vec2& nRef, uint64_t quietR, uint64_t quietI, Real radius, ClipCertificate& k)
+	{
+		k = ClipCertificate {};
+		if (R.n > 64 || I.n > 64) return; // no certificate: bit masks
+		Real best = std::numeric_limits<Real>::infinity(), second = best;
+		for (int i = 0; i < I.n; ++i) {
+			const Real d = I.nrm(i).dot(nRef);
+			if (d < best) second = best, best = d;
+			else if (d < second) second = d;
+			if (std::abs(d - kParallel) <= kFacingMargin) k.unsure |= uint64_t(1) << i;
+			else k.facing |= uint64_t(d > kParallel) << i;
+		}
+		const Vec2 r0      = R.v(refEdge);
+		const int  inc1    = inc + 1 < I.n ? inc + 1 : 0;
+		const Real atInc   = std::min(nRef.dot(I.v(inc) - r0), nRef.dot(I.v(inc1) - r0));
+		bool       support = true;
+		for (int i = 0; i < I.n && support; ++i)
+			if (i != inc && i != inc1) support = nRef.dot(I.v(i) - r0) >= atInc + 2 * radius;
+		k.incEdge      = inc;
+		k.incLead      = second - best;
+		k.quietR       = quietR;
+		k.quietI       = quietI;
+		k.supportOnInc = support;
+		k.radius       = radius;
+	}
+
 	// The contact segment on edge refEdge of polygon refBody (1: A, 2: B): the facing edge of the
 	// other polygon (outward normal most anti-parallel to the reference normal) clipped to
 	// (i) the side planes of the reference edge, (ii) the part within maxSep of its line and, if
@@ -66,16 +136,31 @@ namespace {
 	// the reference line is within maxSep of the incident polygon (see below). incGiven >= 0: that
 	// edge of the other polygon is the incident edge instead. Fills c (except separation) and
 	// returns true if something is left.
-	bool clipOnReference(const PolygonView& A, const PolygonView& B, int refBody, int refEdge, Real maxSep, bool strict, EdgeContact& c, int incGiven = -1)
+	// R: the reference polygon (body refBody), I: the other one, read through Arrays or Posed.
+	// cert: the certificates of the memory's search (ClipCertificate, EdgeContact.hpp), checked by the
+	// caller for this step: the incident edge and the facing edges are taken from it, and the quiet
+	// clips are skipped, which changes nothing (each would have left [lo, hi] as it is). record:
+	// filled with the certificates of this clip (strict, no incGiven) if something is left; radius:
+	// theirs (m).
+	template <class PR, class PI>
+	bool clipOn(const PR&              R,
+	            const PI&              I,
+	            int                    refBody,
+	            int                    refEdge,
+	            Real                   maxSep,
+	            bool                   strict,
+	            EdgeContact&           c,
+	            int                    incGiven,
+	            const ClipCertificate* cert,
+	            ClipCertificate*       record,
+	            Real                   radius)
 	{
-		const PolygonView& R  = (refBody == 1) ? A : B;
-		const PolygonView& I  = (refBody == 1) ? B : A;
-		const int          nI = I.n;
+		const int nI = I.n;
 
 		// reference edge frame: the outward normal is the polygon's own (exactly the one the
 		// separating-axis search used), the tangent follows the CCW direction
-		const Vec2 r0 = R.v[refEdge], r1 = R.v[(refEdge + 1) % R.n];
-		const Vec2 nRef = R.nrm[refEdge];
+		const Vec2 r0 = R.v(refEdge), r1 = R.v((refEdge + 1) % R.n);
+		const Vec2 nRef = R.nrm(refEdge);
 		const Vec2 tRef(-nRef.y(), nRef.x());
 		const Real Lr = (r1 - r0).norm();
 
@@ -84,13 +169,20 @@ namespace {
 		int      inc    = 0;
 		Real     minDot = std::numeric_limits<Real>::infinity();
 		uint64_t up     = 0;
-		for (int i = 0; i < nI; ++i) {
-			const Real d = I.nrm[i].dot(nRef);
-			if (d < minDot) minDot = d, inc = i;
-			up |= uint64_t(d > kParallel) << (i & 63);
-		}
+		if (cert) {
+			inc = cert->incEdge, up = cert->facing;
+			for (uint64_t m = cert->unsure; m; m &= m - 1) { // near the threshold: as now
+				const int i = __builtin_ctzll(m);
+				up |= uint64_t(I.nrm(i).dot(nRef) > kParallel) << i;
+			}
+		} else
+			for (int i = 0; i < nI; ++i) {
+				const Real d = I.nrm(i).dot(nRef);
+				if (d < minDot) minDot = d, inc = i;
+				up |= uint64_t(d > kParallel) << (i & 63);
+			}
 		if (incGiven >= 0) inc = incGiven;
-		const Vec2 q0 = I.v[inc], q1 = I.v[(inc + 1) % nI];
+		const Vec2 q0 = I.v(inc), q1 = I.v((inc + 1) % nI);
 
 		// Incident point q(lambda) = q0 + lambda (q1 - q0), lambda in [0,1]. In the reference frame:
 		//   coordinate along the edge  x(lambda) = tRef.(q - r0)   (seed eq. (9))
@@ -103,12 +195,21 @@ namespace {
 		if (x0 < 0 || x1 < 0) clipLinear(x0, x1 - x0, lo, hi);                  // (i) x >= 0
 		if (x0 > Lr || x1 > Lr) clipLinear(Lr - x0, -(x1 - x0), lo, hi);        //     x <= Lr
 		if (g0 < -maxSep || g1 < -maxSep) clipLinear(g0 + maxSep, g1 - g0, lo, hi); // (ii) d >= -maxSep
+		const uint64_t skipR = cert ? cert->quietR : 0, skipI = cert ? cert->quietI : 0;
+		uint64_t       quietR = 0, quietI = 0; // for record
 		if (strict) {
-			for (int j = 0; j < R.n; ++j) { // (iii) nR[j].(q - R[j]) <= maxSep
-				if (j == refEdge) continue;
-				const Real a0 = R.nrm[j].dot(q0 - R.v[j]), a1 = R.nrm[j].dot(q1 - R.v[j]);
+			auto sideIn = [&](int j) { // (iii) nR[j].(q - R[j]) <= maxSep
+				const Vec2 nj = R.nrm(j), vj = R.v(j);
+				const Real a0 = nj.dot(q0 - vj), a1 = nj.dot(q1 - vj);
 				if (a0 > maxSep || a1 > maxSep) clipLinear(maxSep - a0, -(a1 - a0), lo, hi);
-			}
+				else if (record && j < 64 && std::max(a0, a1) <= -radius) quietR |= uint64_t(1) << j;
+			};
+			if (R.n <= 64) // the other edges in increasing order, less the quiet ones
+				for (uint64_t m = (~uint64_t(0) >> (64 - R.n)) & ~(uint64_t(1) << refEdge) & ~skipR; m; m &= m - 1)
+					sideIn(__builtin_ctzll(m));
+			else
+				for (int j = 0; j < R.n; ++j)
+					if (j != refEdge) sideIn(j);
 			// (iv) the foot f = r0 + x tRef of q on the reference line lies in the incident polygon:
 			// nI[j].(f - I[j]) <= maxSep. With (i) and (iii) the chord q-f is then in both polygons,
 			// so every overlap d reported is a chord of their intersection: where a sharp or oblique
@@ -119,15 +220,17 @@ namespace {
 			// the far side of I, which passes the test below without a clip.
 			const Vec2 f0 = r0 + x0 * tRef, f1 = r0 + x1 * tRef;
 			auto       footIn = [&](int j) {
-                                const Real a0 = I.nrm[j].dot(f0 - I.v[j]), a1 = I.nrm[j].dot(f1 - I.v[j]);
+                                const Vec2 nj = I.nrm(j), vj = I.v(j);
+                                const Real a0 = nj.dot(f0 - vj), a1 = nj.dot(f1 - vj);
                                 if (a0 > maxSep || a1 > maxSep) clipLinear(maxSep - a0, -(a1 - a0), lo, hi); // else nothing to clip
+                                else if (record && std::max(a0, a1) <= -2 * radius) quietI |= uint64_t(1) << (j & 63);
 			};
 			if (nI <= 64)
-				for (uint64_t m = up; m; m &= m - 1)
+				for (uint64_t m = up & ~skipI; m; m &= m - 1)
 					footIn(__builtin_ctzll(m));
 			else
 				for (int j = 0; j < nI; ++j)
-					if (I.nrm[j].dot(nRef) > kParallel) footIn(j);
+					if (I.nrm(j).dot(nRef) > kParallel) footIn(j);
 		}
 		if (!(lo <= hi)) return false;
 
@@ -149,7 +252,25 @@ namespace {
 		c.refEdge  = refEdge;
 		c.incEdge  = inc;
 		c.touching = true;
+		if (record) recordCertificate(R, I, refEdge, inc, nRef, quietR, quietI, radius, *record);
 		return true;
+	}
+	template <class PA, class PB>
+	bool clipOnReference(
+	        const PA&              A,
+	        const PB&              B,
+	        int                    refBody,
+	        int                    refEdge,
+	        Real                   maxSep,
+	        bool                   strict,
+	        EdgeContact&           c,
+	        int                    incGiven = -1,
+	        const ClipCertificate* cert     = nullptr,
+	        ClipCertificate*       record   = nullptr,
+	        Real                   radius   = 0)
+	{
+		return refBody == 1 ? clipOn(A, B, 1, refEdge, maxSep, strict, c, incGiven, cert, record, radius)
+		                    : clipOn(B, A, 2, refEdge, maxSep, strict, c, incGiven, cert, record, radius);
 	}
 
 	// Largest change of any edge separation since the memory's search (SearchMemory, skip rule in
@@ -164,6 +285,53 @@ namespace {
 		auto       l1  = [](const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); };
 		const Real pad = 1e-9 * (l1(a.centroid) + l1(b.centroid) + a.radius + b.radius);
 		return relativeMotionBound(rel, relCos, relSin, m.rel, m.relCos, m.relSin, a.radius, b.radius) + pad;
+	}
+
+	// The memory's search chose the hinted edge, and its clip certificates (if any) have not been
+	// outgrown: a step whose drift reaches their radius searches again instead (the same result),
+	// which renews them.
+	bool followable(const SearchMemory& m, const ContactHint& hint, Real drift)
+	{
+		return m.valid && m.refBody == hint.refBody && m.refEdge == hint.refEdge && !(m.clip.incEdge >= 0 && !(drift < m.clip.radius));
+	}
+
+	// The skip rule of SearchMemory (EdgeContact.hpp) on the memory's edge, drift D and the relative
+	// rotation (relCos, relSin) given: true if the full search would keep that edge, with c its
+	// contact (clipped, or apart: separation, refBody and refEdge only); false, with c untouched or
+	// emptied, if the search must decide, or (onlyCertified) if the clip certificates do not hold.
+	template <class PA, class PB>
+	bool keepHinted(const PA& A, const PB& B, const SearchMemory& m, Real drift, Real relCos, Real relSin, Real maxSep, Real tol, bool onlyCertified, EdgeContact& c)
+	{
+		const int              rb = m.refBody, re = m.refEdge;
+		const ClipCertificate& k  = m.clip;
+		// the certificates hold for this relative rotation (chord χ, L1: a bound of the Euclidean)?
+		const Real chord     = std::abs(relCos - m.relCos) + std::abs(relSin - m.relSin);
+		const bool certified = k.incEdge >= 0 && k.incLead > 2 * chord && chord < kFacingMargin;
+		if (onlyCertified && !(certified && k.supportOnInc)) return false;
+		auto sepOf = [&](int body, int edge) { return body == 1 ? edgeSeparation(A, edge, B) : edgeSeparation(B, edge, A); };
+		auto prefSepOf = [&]() {
+			if (!(certified && k.supportOnInc)) return sepOf(rb, re);
+			return rb == 1 ? separationAtIncident(A, re, B, k.incEdge) : separationAtIncident(B, re, A, k.incEdge);
+		};
+		const Real prefSep = prefSepOf();
+		bool       keep    = prefSep + tol >= m.maxOther + drift;
+		for (int r = 0; r < 2 && keep; ++r) {
+			if (m.rivalBody[r] == 0) continue;
+			// a rival ahead of the kept edge by l then is ahead by at most l + 2D now
+			if (m.rivalLead[r] + 2 * drift <= tol) continue;
+			keep = prefSep + tol >= sepOf(m.rivalBody[r], m.rivalEdge[r]);
+		}
+		if (!keep) return false;
+		c.separation = prefSep;
+		c.refBody    = rb;
+		c.refEdge    = re;
+		if (!(prefSep <= maxSep)) return true; // the full search would find the same: apart
+		if (clipOnReference(A, B, rb, re, maxSep, true, c, -1, certified ? &k : nullptr)) {
+			c.separation = prefSep;
+			return true;
+		}
+		c = EdgeContact {}; // nothing left on that edge: the full search decides
+		return false;
 	}
 } // namespace
 
@@ -209,28 +377,8 @@ EdgeContact edgeContact(
 	Real       relCos = 1, relSin = 0;
 	if (coherent) {
 		const Real drift = separationDrift(*poseA, *poseB, *memory, rel, relCos, relSin);
-		if (hinted && memory->valid && memory->refBody == hint->refBody && memory->refEdge == hint->refEdge) {
-			const int  rb      = hint->refBody, re = hint->refEdge;
-			auto       sepOf   = [&](int body, int edge) { return (body == 1) ? edgeSeparation(A, edge, B) : edgeSeparation(B, edge, A); };
-			const Real prefSep = sepOf(rb, re);
-			bool       keep    = prefSep + tol >= memory->maxOther + drift;
-			for (int k = 0; k < 2 && keep; ++k) {
-				if (memory->rivalBody[k] == 0) continue;
-				// a rival ahead of the kept edge by m then is ahead by at most m + 2D now
-				if (memory->rivalLead[k] + 2 * drift <= tol) continue;
-				keep = prefSep + tol >= sepOf(memory->rivalBody[k], memory->rivalEdge[k]);
-			}
-			if (keep) {
-				c.separation = prefSep;
-				c.refBody    = rb;
-				c.refEdge    = re;
-				if (!(prefSep <= maxSep)) return c; // the full search would find the same: apart
-				if (clipOnReference(A, B, rb, re, maxSep, true, c)) {
-					c.separation = prefSep;
-					return c;
-				}
-				c = EdgeContact {}; // nothing left on that edge: the full search decides
-			}
+		if (hinted && followable(*memory, *hint, drift)) {
+			if (keepHinted(arrays(A), arrays(B), *memory, drift, relCos, relSin, maxSep, tol, false, c)) return c;
 		}
 	}
 
@@ -333,7 +481,8 @@ EdgeContact edgeContact(
 	// poking into the other one away from its facing edge, (iii) below leaves nothing, and the
 	// best edge of the other block, which that corner then penetrates, is the reference instead
 	// ((iv) likewise leaves nothing where a corner of the other block leans away from the line).
-	if (clipOnReference(A, B, refBody, refEdge, maxSep, true, c)) {
+	const Arrays a = arrays(A), b = arrays(B);
+	if (clipOnReference(a, b, refBody, refEdge, maxSep, true, c, -1, nullptr, coherent ? &memory->clip : nullptr, kCertificateRadius * minSize)) {
 		c.separation = sep;
 		if (coherent) memory->valid = true; // only this outcome is what the skip rule reproduces
 		return c;
@@ -343,7 +492,7 @@ EdgeContact edgeContact(
 	int         alt       = 0;
 	for (int i = 1; i < (other == 1 ? nA : nB); ++i)
 		if (otherSeps[i] > otherSeps[alt]) alt = i;
-	if (otherSeps[alt] <= maxSep && clipOnReference(A, B, other, alt, maxSep, true, c)) {
+	if (otherSeps[alt] <= maxSep && clipOnReference(a, b, other, alt, maxSep, true, c)) {
 		c.separation = otherSeps[alt];
 		return c;
 	}
@@ -372,7 +521,7 @@ EdgeContact edgeContact(
 					const Real dk = Q.nrm[k].dot(P.nrm[r]);
 					if (!(dk < bestDot)) continue;
 					EdgeContact t;
-					if (clipOnReference(A, B, body, r, maxSep, true, t, k)) bestK = k, bestDot = dk, found = t;
+					if (clipOnReference(a, b, body, r, maxSep, true, t, k)) bestK = k, bestDot = dk, found = t;
 				}
 				if (bestK >= 0) foundSep = seps[r];
 			}
@@ -385,9 +534,48 @@ EdgeContact edgeContact(
 	}
 	// nothing (one polygon inside the other, or round-off): the projection on the chosen edge
 	// (clips (i) and (ii) only)
-	clipOnReference(A, B, refBody, refEdge, maxSep, false, c);
+	clipOnReference(a, b, refBody, refEdge, maxSep, false, c);
 	c.separation = sep;
 	return c;
+}
+
+PolygonView PosedPolygon::place(Vec2* out) const
+{
+	const int n = local.n;
+	for (int i = 0; i < n; ++i)
+		out[i] = vertex(i);
+	for (int i = 0; i < n; ++i)
+		out[n + i] = normal(i);
+	return PolygonView { out, out + n, n };
+}
+
+bool followContact(
+        const PolygonView&  A,
+        const PosedPolygon& B,
+        Real                maxSeparation,
+        const ContactHint&  hint,
+        Real                hysteresis,
+        Real                minSize,
+        const BlockPose&    poseA,
+        const BlockPose&    poseB,
+        const SearchMemory& memory,
+        EdgeContact&        c)
+{
+	// edgeContact's opening, to its skip rule (the same quantities, the same arithmetic)
+	const int nA = A.n, nB = B.local.n;
+	if (nA < 3 || nB < 3) return false;
+	const Real slop   = 1e-12 * minSize;
+	const Real maxSep = std::max(maxSeparation, Real(0)) + slop;
+	const Real tol    = hysteresis * minSize;
+	if (!((hint.refBody == 1 || hint.refBody == 2) && hint.refEdge >= 0 && hint.refEdge < (hint.refBody == 1 ? nA : nB))) return false;
+	Vec2       rel;
+	Real       relCos, relSin;
+	const Real drift = separationDrift(poseA, poseB, memory, rel, relCos, relSin);
+	if (!followable(memory, hint, drift)) return false;
+	EdgeContact kept;
+	if (!keepHinted(arrays(A), Posed { B, nB }, memory, drift, relCos, relSin, maxSep, tol, true, kept)) return false;
+	c = kept;
+	return true;
 }
 
 bool separatedBeyond(const PolygonView& A, const PolygonView& B, Real maxSeparation, Real minSize)

@@ -76,6 +76,33 @@ struct BlockPose {
 /// a new full search would choose the same edge again, so it is skipped: the result is identical to
 /// the full search, only cheaper. Owned by the caller (one per contact); a default-constructed
 /// (invalid) memory forces a full search.
+/// Certificates for the clipping of a kept reference edge (clipOnReference in EdgeContact.cpp), taken
+/// at the memory's search: which work of the clip cannot change the result while every point of
+/// either block has moved by at most `radius` relative to the other since then (the drift D of
+/// SearchMemory's skip rule) and the relative rotation's chord χ is within the margins below. Each
+/// skipped test would have left the segment unchanged, so the result is the full clip's, bit for bit.
+///  * the incident edge: the facing dots nI·nRef change by at most χ, so an edge that faced more
+///    squarely than any other by incLead > 2χ still does, and the edges facing along +nRef
+///    (clip (iv)) are the same while χ is below the margin (0.05) by which their dots were above
+///    the threshold then (`facing`), those within it (`unsure`) being tested again;
+///  * clip (iii) by an edge j of the reference polygon acts only where an incident end lies beyond
+///    it, nR[j]·(q − R[j]) > maxSep; the ends move by at most D, so an edge they were at least
+///    `radius` inside (bit j of quietR) still does not act (maxSep > 0);
+///  * clip (iv) by an edge j of the incident polygon tests the feet of the ends on the reference
+///    line, which move by at most 2D relative to it: bit j of quietI, at least 2 radius inside;
+///  * the separation of the reference edge, the smallest nRef·(w − r0) over incident vertices w,
+///    is at an end of the incident edge while every other vertex was 2 radius farther
+///    (supportOnInc; each term moves by at most D).
+/// Only for polygons of at most 64 edges (bit masks); incEdge = -1: no certificate.
+struct ClipCertificate {
+	int      incEdge      = -1;
+	Real     incLead      = 0;
+	uint64_t facing = 0, unsure = 0;
+	uint64_t quietR = 0, quietI = 0;
+	bool     supportOnInc = false;
+	Real     radius       = 0; ///< m; a step whose drift exceeds it searches again (same result) and renews them
+};
+
 struct SearchMemory {
 	bool valid   = false;
 	int  refBody = 0, refEdge = -1;
@@ -84,6 +111,7 @@ struct SearchMemory {
 	Real maxOther = 0;            ///< largest separation of all other edges at the search (m)
 	Vec2 rel      = Vec2::Zero(); ///< centroid of B in A's frame at the search (m)
 	Real relCos = 1, relSin = 0;  ///< rotation of B relative to A at the search
+	ClipCertificate clip;         ///< what the clip of the kept edge may skip (see above)
 };
 
 /// Upper bound (m) of how far any point of either block can have moved relative to the other since
@@ -148,6 +176,8 @@ EdgeContact edgeContact(
 /// full search would keep it: it is used directly. A rival's separation is computed now unless its
 /// lead over the kept edge at the search plus 2D is within tol (both moved by at most D). pad = 1e-9 (|c_A| + |c_B| + R_A + R_B) covers round-off of the world coordinates.
 /// If its clipped segment is empty, the full search runs (and decides as it always does).
+/// The clip of the kept edge skips what the search's ClipCertificate proves idle; once D reaches the
+/// certificates' radius (2 % of minSize) the search runs again, with the same result, and renews them.
 EdgeContact edgeContact(
         const PolygonView& A,
         const PolygonView& B,
@@ -158,6 +188,46 @@ EdgeContact edgeContact(
         const BlockPose*   poseA  = nullptr,
         const BlockPose*   poseB  = nullptr,
         SearchMemory*      memory = nullptr);
+
+/// A block's polygon in its own frame (vertices about its centroid and edge normals, as a
+/// PolygonView) and its pose in the frame a contact is computed in: rotation (cos, sin), then
+/// translation pos. A vertex or normal is placed when asked, by the one formula place() uses too.
+struct PosedPolygon {
+	PolygonView local;
+	Vec2        pos = Vec2::Zero();
+	Real        cos = 1, sin = 0;
+	Vec2        vertex(int i) const
+	{
+		const Vec2& v = local.v[i];
+		return Vec2(pos.x() + cos * v.x() - sin * v.y(), pos.y() + sin * v.x() + cos * v.y());
+	}
+	Vec2 normal(int i) const
+	{
+		const Vec2& e = local.nrm[i];
+		return Vec2(cos * e.x() - sin * e.y(), sin * e.x() + cos * e.y());
+	}
+	/// Every vertex, then every normal, into out (2 n entries): the placed polygon.
+	PolygonView place(Vec2* out) const;
+};
+
+/// The step of a followed contact when its memory certifies it: edgeContact(A, B.place(...),
+/// maxSeparation, &hint, hysteresis, minSize, &poseA, &poseB, &memory) bit for bit, from the few
+/// vertices and edges of B that the skip rule and the clip certificates (ClipCertificate) leave to
+/// test, placed one by one instead of all of B. Returns false, with c and memory untouched, where
+/// they do not decide the step (no memory of this edge, the certificates outgrown or not holding,
+/// the search needed, nothing left on the edge); then the caller places B and calls edgeContact.
+/// The memory is only read: every step it decides, edgeContact would decide without searching.
+bool followContact(
+        const PolygonView&  A,
+        const PosedPolygon& B,
+        Real                maxSeparation,
+        const ContactHint&  hint,
+        Real                hysteresis,
+        Real                minSize,
+        const BlockPose&    poseA,
+        const BlockPose&    poseB,
+        const SearchMemory& memory,
+        EdgeContact&        c);
 
 /// Cheap rejection of a pair that edgeContact would find apart: true if some edge of either polygon
 /// separates them by more than maxSeparation + 2 slop (slop = 1e-12 minSize, edgeContact's round-off
