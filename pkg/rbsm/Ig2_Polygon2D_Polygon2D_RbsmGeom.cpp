@@ -37,11 +37,10 @@ namespace {
 	// A block in its own frame: its vertices and outward edge normals as stored by Polygon2D (no
 	// copy). A shape whose derived data were not made (built in C++ without postLoad) gets its normals
 	// computed into the caller's buffer (the heap beyond kStackVertices vertices).
-	constexpr int     kStackVertices = 16;
-	rbsm::PolygonView ownFramePolygon(const Polygon2D& shape, rbsm::Vec2* stack, std::vector<rbsm::Vec2>& heap)
+	constexpr int kStackVertices = 16;
+	[[gnu::noinline]] rbsm::PolygonView normalsMade(const Polygon2D& shape, rbsm::Vec2* stack, std::vector<rbsm::Vec2>& heap)
 	{
-		const int n = int(shape.vertices.size());
-		if (shape.edgeNormals.size() == size_t(n)) return rbsm::PolygonView { shape.vertices.data(), shape.edgeNormals.data(), n };
+		const int   n   = int(shape.vertices.size());
 		rbsm::Vec2* out = stack;
 		if (n > kStackVertices) {
 			heap.resize(2 * size_t(n));
@@ -51,6 +50,12 @@ namespace {
 		std::copy(shape.vertices.begin(), shape.vertices.end(), out);
 		std::copy(normals.begin(), normals.end(), out + n);
 		return rbsm::PolygonView { out, out + n, n };
+	}
+	inline rbsm::PolygonView ownFramePolygon(const Polygon2D& shape, rbsm::Vec2* stack, std::vector<rbsm::Vec2>& heap)
+	{
+		const auto &v = shape.vertices, &e = shape.edgeNormals;
+		if (e.size() == v.size()) return rbsm::PolygonView { v.data(), e.data(), int(v.size()) };
+		return normalsMade(shape, stack, heap);
 	}
 
 	bool isFixed(const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL; }
@@ -166,7 +171,6 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		const rbsm::BlockPose poseB { rel, relCos, relSin, B.circumradius };
 		rbsm::ContactHint     hint;
 		if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
-		rbsm::SearchMemory newMemory; // a new contact's first search; kept in the geometry if it is made
 		// A followed joint whose search memory certifies this step: from the few vertices it needs
 		// (rbsm::followContact, bit for bit edgeContact's result). Otherwise block 2 is placed whole.
 		if (!(g && rbsm::followContact(va, pb, maxSeparation, hint, hysteresis, minSize, poseA, poseB, g->searchMemory, c))) {
@@ -176,10 +180,20 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 			const rbsm::PolygonView vb = pb.place(pb.local.n > kStackVertices ? placedHeap.data() : stackB);
 			// a potential interaction (bounding boxes overlap) whose blocks are clearly apart: no search
 			if (!g && rbsm::separatedBeyond(va, vb, maxSeparation, minSize)) return false;
+			rbsm::SearchMemory  newMemory; // a new contact's first search; kept in the geometry if it is made
 			rbsm::SearchMemory& memory = g ? g->searchMemory : newMemory;
 			c                          = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, minSize, &poseA, &poseB, &memory);
+			if (!g) {
+				if (!(c.touching && c.length > 0)) return false; // no new contact
+				auto geom = shared_ptr<RbsmGeom>(new RbsmGeom);
+				geom->setIntegrationPoints(nIP);
+				geom->thickness    = std::min(A.thickness, B.thickness);
+				geom->reducedMass  = reducedMass(state1, state2);
+				geom->searchMemory = newMemory;
+				I->geom            = geom;
+				g                  = geom.get();
+			}
 		}
-		if (!existing && !(c.touching && c.length > 0)) return false; // no new contact
 		if (existing && !c.touching) {
 			// The blocks of an existing joint no longer face each other within reach: YADE expects the
 			// law, not the geometry, to end an interaction, so the joint is handed over as lost.
@@ -187,15 +201,6 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 			g->separation   = c.separation;
 			g->frozen.valid = false;
 			return true;
-		}
-		if (!g) {
-			auto geom = shared_ptr<RbsmGeom>(new RbsmGeom);
-			geom->setIntegrationPoints(nIP);
-			geom->thickness    = std::min(A.thickness, B.thickness);
-			geom->reducedMass  = reducedMass(state1, state2);
-			geom->searchMemory = newMemory;
-			I->geom            = geom;
-			g                  = geom.get();
 		}
 		if (updateTolerance > 0) g->frozen = rbsm::freezeContact(c, relPose);
 		else g->frozen.valid = false;

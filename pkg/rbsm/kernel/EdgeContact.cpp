@@ -276,7 +276,7 @@ namespace {
 	// Largest change of any edge separation since the memory's search (SearchMemory, skip rule in
 	// EdgeContact.hpp): relativeMotionBound, plus the round-off pad. Also returns the current
 	// relative pose.
-	Real separationDrift(const BlockPose& a, const BlockPose& b, const SearchMemory& m, Vec2& rel, Real& relCos, Real& relSin)
+	[[gnu::always_inline]] inline Real separationDrift(const BlockPose& a, const BlockPose& b, const SearchMemory& m, Vec2& rel, Real& relCos, Real& relSin)
 	{
 		const Vec2 d = b.centroid - a.centroid;
 		rel          = Vec2(a.cos * d.x() + a.sin * d.y(), -a.sin * d.x() + a.cos * d.y()); // R(-θA) d
@@ -572,10 +572,7 @@ bool followContact(
 	Real       relCos, relSin;
 	const Real drift = separationDrift(poseA, poseB, memory, rel, relCos, relSin);
 	if (!followable(memory, hint, drift)) return false;
-	EdgeContact kept;
-	if (!keepHinted(arrays(A), Posed { B, nB }, memory, drift, relCos, relSin, maxSep, tol, true, kept)) return false;
-	c = kept;
-	return true;
+	return keepHinted(arrays(A), Posed { B, nB }, memory, drift, relCos, relSin, maxSep, tol, true, c);
 }
 
 bool separatedBeyond(const PolygonView& A, const PolygonView& B, Real maxSeparation, Real minSize)

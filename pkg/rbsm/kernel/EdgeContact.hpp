@@ -213,10 +213,10 @@ struct PosedPolygon {
 /// The step of a followed contact when its memory certifies it: edgeContact(A, B.place(...),
 /// maxSeparation, &hint, hysteresis, minSize, &poseA, &poseB, &memory) bit for bit, from the few
 /// vertices and edges of B that the skip rule and the clip certificates (ClipCertificate) leave to
-/// test, placed one by one instead of all of B. Returns false, with c and memory untouched, where
-/// they do not decide the step (no memory of this edge, the certificates outgrown or not holding,
-/// the search needed, nothing left on the edge); then the caller places B and calls edgeContact.
-/// The memory is only read: every step it decides, edgeContact would decide without searching.
+/// test, placed one by one instead of all of B. Returns false where they do not decide the step (no
+/// memory of this edge, the certificates outgrown or not holding, the search needed, nothing left on
+/// the edge); then c is unspecified, and the caller places B and calls edgeContact. The memory is
+/// only read: every step it decides, edgeContact would decide without searching.
 bool followContact(
         const PolygonView&  A,
         const PosedPolygon& B,
