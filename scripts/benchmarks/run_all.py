@@ -88,7 +88,8 @@ FUNCS = {  # label -> regex on callgrind_annotate's inclusive function names
     "Ig2 (geometry)": r"yade::Ig2_\w+::go\(",
     "Ip2 (physics)": r"yade::Ip2_\w+::go\(",
     "Law2 (law)": r"yade::Law2_\w+::go\(",
-    "edgeContact (kernel)": r"edgeContact\(",
+    "edgeContact (kernel)": r"edgeContact\(",  # placing block 2 whole: new contacts, searches
+    "followContact (kernel)": r"followContact\(",  # a followed joint's certified steps (EdgeContact.hpp)
 }
 
 

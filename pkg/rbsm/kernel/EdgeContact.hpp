@@ -66,21 +66,12 @@ struct BlockPose {
 	Real radius = 0;
 };
 
-/// What a full separating-axis search leaves for the next steps of the same contact (temporal
-/// coherence, in the spirit of Box2D's and Bullet's cached separating axes, but exact): the edge it
-/// chose, its two closest rivals (for two blocks sharing an edge, the other block's twin edge has
-/// the same separation: it must be watched exactly, not bounded), the largest separation of all the
-/// remaining edges at that moment, and the pose of B relative to A then. While the chosen edge's
-/// separation now is within the hysteresis of its rivals' (recomputed) and of that old maximum plus
-/// the largest change a rigid motion since then can have made of any separation (see edgeContact),
-/// a new full search would choose the same edge again, so it is skipped: the result is identical to
-/// the full search, only cheaper. Owned by the caller (one per contact); a default-constructed
-/// (invalid) memory forces a full search.
-/// Certificates for the clipping of a kept reference edge (clipOnReference in EdgeContact.cpp), taken
-/// at the memory's search: which work of the clip cannot change the result while every point of
-/// either block has moved by at most `radius` relative to the other since then (the drift D of
-/// SearchMemory's skip rule) and the relative rotation's chord χ is within the margins below. Each
-/// skipped test would have left the segment unchanged, so the result is the full clip's, bit for bit.
+/// Certificates for the clipping of a kept reference edge (clipOn in EdgeContact.cpp), taken at the
+/// search of a SearchMemory (below): which work of the clip cannot change the result while every
+/// point of either block has moved by less than `radius` relative to the other since then (the drift
+/// D of SearchMemory's skip rule) and the relative rotation's chord χ is within the margins below.
+/// Each skipped test would have left the segment unchanged, so the result is the full clip's, bit for
+/// bit.
 ///  * the incident edge: the facing dots nI·nRef change by at most χ, so an edge that faced more
 ///    squarely than any other by incLead > 2χ still does, and the edges facing along +nRef
 ///    (clip (iv)) are the same while χ is below the margin (0.05) by which their dots were above
@@ -88,8 +79,9 @@ struct BlockPose {
 ///  * clip (iii) by an edge j of the reference polygon acts only where an incident end lies beyond
 ///    it, nR[j]·(q − R[j]) > maxSep; the ends move by at most D, so an edge they were at least
 ///    `radius` inside (bit j of quietR) still does not act (maxSep > 0);
-///  * clip (iv) by an edge j of the incident polygon tests the feet of the ends on the reference
-///    line, which move by at most 2D relative to it: bit j of quietI, at least 2 radius inside;
+///  * clip (iv) by an edge j of the incident polygon tests the feet f = q + g nRef of the ends on
+///    the reference line, which move by at most 2D relative to it (|Δg| ≤ D, and |g| χ ≤ D since
+///    |g| ≤ R_A + R_B + |r| and χ < 1): bit j of quietI, at least 2 radius inside;
 ///  * the separation of the reference edge, the smallest nRef·(w − r0) over incident vertices w,
 ///    is at an end of the incident edge while every other vertex was 2 radius farther
 ///    (supportOnInc; each term moves by at most D).
@@ -100,9 +92,19 @@ struct ClipCertificate {
 	uint64_t facing = 0, unsure = 0;
 	uint64_t quietR = 0, quietI = 0;
 	bool     supportOnInc = false;
-	Real     radius       = 0; ///< m; a step whose drift exceeds it searches again (same result) and renews them
+	Real     radius       = 0; ///< m; a step whose drift reaches it searches again (same result) and renews them
 };
 
+/// What a full separating-axis search leaves for the next steps of the same contact (temporal
+/// coherence, in the spirit of Box2D's and Bullet's cached separating axes, but exact): the edge it
+/// chose, its two closest rivals (for two blocks sharing an edge, the other block's twin edge has
+/// the same separation: it must be watched exactly, not bounded), the largest separation of all the
+/// remaining edges at that moment, and the pose of B relative to A then. While the chosen edge's
+/// separation now is within the hysteresis of its rivals' (recomputed) and of that old maximum plus
+/// the largest change a rigid motion since then can have made of any separation (see edgeContact),
+/// a new full search would choose the same edge again, so it is skipped: the result is identical to
+/// the full search, only cheaper. Owned by the caller (one per contact); a default-constructed
+/// (invalid) memory forces a full search.
 struct SearchMemory {
 	bool valid   = false;
 	int  refBody = 0, refEdge = -1;
