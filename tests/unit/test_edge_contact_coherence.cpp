@@ -142,7 +142,10 @@ double followInFrameOfA(Block A, Block B, int steps, Real dx, Real da, unsigned 
 		const PolygonView  placedB   = posedB.place(placed.data());
 		const EdgeContact  full      = edgeContact(ownA, placedB, maxSeparation, haveHint ? &hint : nullptr, hysteresis, minSize);
 		expectSame(edgeContact(ownA, placedB, maxSeparation, haveHint ? &hint : nullptr, hysteresis, minSize, &qa, &qb, &afterFull), full, step);
+		// what the caller's contact held before (Ig2: the frozen contact it decided against) must not
+		// leak into a decided step
 		EdgeContact fast;
+		fast.touching = true, fast.length = 1, fast.d0 = fast.d1 = 1, fast.incEdge = 7;
 		if (haveHint && followContact(ownA, posedB, maxSeparation, hint, hysteresis, minSize, qa, qb, memory, fast)) {
 			expectSame(fast, full, step);
 			EXPECT_TRUE(afterFull.rel == memory.rel && afterFull.relCos == memory.relCos && afterFull.relSin == memory.relSin)

@@ -297,8 +297,9 @@ namespace {
 
 	// The skip rule of SearchMemory (EdgeContact.hpp) on the memory's edge, drift D and the relative
 	// rotation (relCos, relSin) given: true if the full search would keep that edge, with c its
-	// contact (clipped, or apart: separation, refBody and refEdge only); false, with c untouched or
-	// emptied, if the search must decide, or (onlyCertified) if the clip certificates do not hold.
+	// contact, every field written (clipped, or apart: separation, refBody and refEdge, the rest as
+	// default); false, with c untouched or emptied, if the search must decide, or (onlyCertified) if
+	// the clip certificates do not hold.
 	template <class PA, class PB>
 	bool keepHinted(const PA& A, const PB& B, const SearchMemory& m, Real drift, Real relCos, Real relSin, Real maxSep, Real tol, bool onlyCertified, EdgeContact& c)
 	{
@@ -322,10 +323,14 @@ namespace {
 			keep = prefSep + tol >= sepOf(m.rivalBody[r], m.rivalEdge[r]);
 		}
 		if (!keep) return false;
-		c.separation = prefSep;
-		c.refBody    = rb;
-		c.refEdge    = re;
-		if (!(prefSep <= maxSep)) return true; // the full search would find the same: apart
+		if (!(prefSep <= maxSep)) { // the full search would find the same: apart
+			c            = EdgeContact {};
+			c.separation = prefSep;
+			c.refBody    = rb;
+			c.refEdge    = re;
+			return true;
+		}
+		// (the clip writes every other field)
 		if (clipOnReference(A, B, rb, re, maxSep, true, c, -1, certified ? &k : nullptr)) {
 			c.separation = prefSep;
 			return true;
