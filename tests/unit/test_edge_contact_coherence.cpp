@@ -1,9 +1,10 @@
 // Temporal coherence of the edge contact (SearchMemory, ClipCertificate and followContact,
 // EdgeContact.hpp): following a contact from step to step with the memory must give EXACTLY
-// (bitwise) what a full separating-axis search with the same hint gives, while skipping most searches. Compared along random trajectories of two blocks
-// that stay in contact: pairs of rectangles sharing an edge (the brick wall of the benchmark), a
-// rectangle rocking on another, and random convex polygons, with small and large steps of relative
-// rotation and translation.
+// (bitwise) what a full separating-axis search with the same hint gives, while skipping most
+// searches. Compared along trajectories of two blocks that stay in contact: pairs of rectangles
+// sharing an edge (the brick wall of the benchmark), a rectangle rocking on another, a brick sliding
+// past a corner, a 12-gon rolling on a brick, and random convex polygons, with small and large steps
+// of relative rotation and translation.
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 
