@@ -66,6 +66,10 @@ void expectSame(const EdgeContact& a, const EdgeContact& b, int step)
 	EXPECT_EQ(a.length, b.length) << "step " << step;
 }
 
+// The relative pose a memory was taken at: rewritten by every full search (the pose moves), kept
+// when the search is skipped.
+bool samePose(const SearchMemory& a, const SearchMemory& b) { return a.rel == b.rel && a.relCos == b.relCos && a.relSin == b.relSin; }
+
 // Follows the pair for `steps` steps of random relative motion (translation up to dx, rotation up
 // to da per step, with a pull back towards the start so that the blocks stay in touch). Returns the
 // fraction of steps where the search was skipped.
@@ -96,7 +100,7 @@ double follow(Block A, Block B, int steps, Real dx, Real da, unsigned seed, Real
 		expectSame(fast, full, step);
 		++compared;
 		// the memory is rewritten by every full search (the pose moved), kept by a skip
-		if (before.valid && memory.rel == before.rel && memory.relCos == before.relCos && memory.relSin == before.relSin) ++skipped;
+		if (before.valid && samePose(memory, before)) ++skipped;
 		hint     = ContactHint { fast.refBody, fast.refEdge };
 		haveHint = fast.touching;
 		if (!fast.touching) memory = SearchMemory {}, haveHint = false;
@@ -149,7 +153,7 @@ double followInFrameOfA(Block A, Block B, int steps, Real dx, Real da, unsigned 
 		fast.touching = true, fast.length = 1, fast.d0 = fast.d1 = 1, fast.incEdge = 7;
 		if (haveHint && followContact(ownA, posedB, maxSeparation, hint, hysteresis, minSize, qa, qb, memory, fast)) {
 			expectSame(fast, full, step);
-			EXPECT_TRUE(afterFull.rel == memory.rel && afterFull.relCos == memory.relCos && afterFull.relSin == memory.relSin)
+			EXPECT_TRUE(samePose(afterFull, memory))
 			        << "step " << step << ": followContact decided a step where edgeContact searched";
 			++decided;
 		}

@@ -287,6 +287,14 @@ namespace {
 		return relativeMotionBound(rel, relCos, relSin, m.rel, m.relCos, m.relSin, a.radius, b.radius) + pad;
 	}
 
+	// What edgeContact and followContact both start from. Round-off slop: an exactly shared edge
+	// moved by a rigid motion has |d| ~ 1e-16 size, which must still count as touching when
+	// maxSeparation = 0; the reach is maxSeparation (at least 0) plus that slop.
+	Real roundOffSlop(Real minSize) { return 1e-12 * minSize; }
+	Real reachWithSlop(Real maxSeparation, Real minSize) { return std::max(maxSeparation, Real(0)) + roundOffSlop(minSize); }
+	// the hint names an edge of A (refBody 1) or B (2)
+	bool hintNamesEdge(const ContactHint& h, int nA, int nB) { return (h.refBody == 1 || h.refBody == 2) && h.refEdge >= 0 && h.refEdge < (h.refBody == 1 ? nA : nB); }
+
 	// The memory's search chose the hinted edge, and its clip certificates (if any) have not been
 	// outgrown: a step whose drift reaches their radius searches again instead (the same result),
 	// which renews them.
@@ -369,12 +377,10 @@ EdgeContact edgeContact(
 	const int   nA = A.n, nB = B.n;
 	if (nA < 3 || nB < 3) return c;
 
-	// Round-off slop: an exactly shared edge moved by a rigid motion has |d| ~ 1e-16 size, which
-	// must still count as touching when maxSeparation = 0.
-	const Real slop   = 1e-12 * minSize;
-	const Real maxSep = std::max(maxSeparation, Real(0)) + slop;
+	const Real slop   = roundOffSlop(minSize);
+	const Real maxSep = reachWithSlop(maxSeparation, minSize);
 	const Real tol    = hysteresis * minSize;
-	const bool hinted = hint && (hint->refBody == 1 || hint->refBody == 2) && hint->refEdge >= 0 && hint->refEdge < (hint->refBody == 1 ? nA : nB);
+	const bool hinted = hint && hintNamesEdge(*hint, nA, nB);
 
 	// --- temporal coherence: keep the hinted edge without a search when provably unchanged ---
 	const bool coherent = poseA && poseB && memory;
@@ -566,13 +572,11 @@ bool followContact(
         const SearchMemory& memory,
         EdgeContact&        c)
 {
-	// edgeContact's opening, to its skip rule (the same quantities, the same arithmetic)
+	// edgeContact's opening, to its skip rule
 	const int nA = A.n, nB = B.local.n;
-	if (nA < 3 || nB < 3) return false;
-	const Real slop   = 1e-12 * minSize;
-	const Real maxSep = std::max(maxSeparation, Real(0)) + slop;
+	if (nA < 3 || nB < 3 || !hintNamesEdge(hint, nA, nB)) return false;
+	const Real maxSep = reachWithSlop(maxSeparation, minSize);
 	const Real tol    = hysteresis * minSize;
-	if (!((hint.refBody == 1 || hint.refBody == 2) && hint.refEdge >= 0 && hint.refEdge < (hint.refBody == 1 ? nA : nB))) return false;
 	Vec2       rel;
 	Real       relCos, relSin;
 	const Real drift = separationDrift(poseA, poseB, memory, rel, relCos, relSin);
