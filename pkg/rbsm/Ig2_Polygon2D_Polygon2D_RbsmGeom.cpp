@@ -157,7 +157,7 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	if (g && updateTolerance > 0 && g->frozen.valid && !g->lost
 	    && rbsm::frozenDrift(g->frozen, relPose, A.circumradius, B.circumradius) <= updateTolerance * minSize) {
 		c               = rbsm::frozenContact(g->frozen, relPose);
-		const Real slop = 1e-12 * minSize, dMin = std::min(c.d0, c.d1);
+		const Real slop = rbsm::roundOffSlop(minSize), dMin = std::min(c.d0, c.d1);
 		frozen          = dMin >= -slop || dMin >= -(reach() + slop); // (reach() ≥ 0: asked only for an opening joint)
 	}
 	if (!frozen) {

@@ -287,10 +287,8 @@ namespace {
 		return relativeMotionBound(rel, relCos, relSin, m.rel, m.relCos, m.relSin, a.radius, b.radius) + pad;
 	}
 
-	// What edgeContact and followContact both start from. Round-off slop: an exactly shared edge
-	// moved by a rigid motion has |d| ~ 1e-16 size, which must still count as touching when
-	// maxSeparation = 0; the reach is maxSeparation (at least 0) plus that slop.
-	Real roundOffSlop(Real minSize) { return 1e-12 * minSize; }
+	// What edgeContact and followContact both start from: the reach is maxSeparation (at least 0)
+	// plus the round-off slop (roundOffSlop, EdgeContact.hpp).
 	Real reachWithSlop(Real maxSeparation, Real minSize) { return std::max(maxSeparation, Real(0)) + roundOffSlop(minSize); }
 	// the hint names an edge of A (refBody 1) or B (2)
 	bool hintNamesEdge(const ContactHint& h, int nA, int nB) { return (h.refBody == 1 || h.refBody == 2) && h.refEdge >= 0 && h.refEdge < (h.refBody == 1 ? nA : nB); }
@@ -587,7 +585,7 @@ bool followContact(
 bool separatedBeyond(const PolygonView& A, const PolygonView& B, Real maxSeparation, Real minSize)
 {
 	if (A.n < 3 || B.n < 3) return false; // edgeContact decides (no contact)
-	const Real beyond = std::max(maxSeparation, Real(0)) + 2e-12 * minSize;
+	const Real beyond = std::max(maxSeparation, Real(0)) + 2 * roundOffSlop(minSize);
 	for (int i = 0; i < A.n; ++i)
 		if (edgeSeparation(A, i, B) > beyond) return true;
 	for (int i = 0; i < B.n; ++i)

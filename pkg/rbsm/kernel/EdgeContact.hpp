@@ -131,6 +131,12 @@ inline Real relativeMotionBound(const Vec2& rel, Real relCos, Real relSin, const
 	return l1(rel - rel0) + chord * (radiusA + radiusB + l1(rel0));
 }
 
+/// Round-off slop of the contact tests (m): 1e-12 of minSize, the smaller block's size. An exactly
+/// shared edge moved by a rigid motion has overlaps |d| ~ 1e-16 size, which must still count as
+/// touching when maxSeparation = 0: edgeContact reaches maxSeparation plus one slop, separatedBeyond
+/// rejects beyond two, and the frozen kinematics (Ig2) keeps a joint within one.
+inline Real roundOffSlop(Real minSize) { return 1e-12 * minSize; }
+
 /// Computes the edge-to-edge contact of A (body 1) and B (body 2).
 ///
 /// Separating-axis search: for every edge i of either polygon, with outward unit normal n_i and
@@ -232,7 +238,7 @@ bool followContact(
         EdgeContact&        c);
 
 /// Cheap rejection of a pair that edgeContact would find apart: true if some edge of either polygon
-/// separates them by more than maxSeparation + 2 slop (slop = 1e-12 minSize, edgeContact's round-off
+/// separates them by more than maxSeparation + 2 slop (roundOffSlop above: edgeContact's round-off
 /// allowance). Stops at the first such edge. Then edgeContact(A, B, maxSeparation, nullptr, ...,
 /// minSize) returns touching = false: its chosen edge is at most one slop worse than the best, so
 /// its separation exceeds maxSeparation + slop. For the potential interactions of the collider
