@@ -3,8 +3,8 @@
 // (bitwise) what a full separating-axis search with the same hint gives, while skipping most
 // searches. Compared along trajectories of two blocks that stay in contact: pairs of rectangles
 // sharing an edge (the brick wall of the benchmark), a rectangle rocking on another, a brick sliding
-// past a corner, a 12-gon rolling on a brick, and random convex polygons, with small and large steps
-// of relative rotation and translation.
+// past a corner, a 12-gon rolling on a brick, a sharp corner sinking obliquely, and random convex
+// polygons, with small and large steps of relative rotation and translation.
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 
@@ -234,6 +234,35 @@ TEST(EdgeContactCoherence, RollingPolygon)
 	const double decided2 = followInFrameOfA(Block(gon), Block(rect(-2, -1, 4, 1)), 3000, 1e-7, 1e-7, 9, 0, Vec2::Zero(), 1e-3);
 	EXPECT_GT(decided1, 0.3);
 	EXPECT_GT(decided2, 0.3);
+}
+
+// A block with a 30° corner sinking into a flat block, its facing edge tilted so that the sharp
+// corner is the last to go in: where the corner is below the reference line, the line passes
+// outside the block above it and the foot clip (iv) by the corner's other side cuts off the part
+// of the facing edge near the corner. That clip is idle while the corner is above the line, by
+// less and less as it sinks: a certificate may call it quiet only with the margin that the drift
+// bound cannot eat up before the certificate is renewed (2 radii). Sinking straight down, the clip's
+// value moves at 0.87 of the drift, so it can go from idle to active within one certificate; four
+// start heights put the renewals at different distances from the crossing. A quiet margin of half a
+// radius fails here; one radius or more passes (a translation moves the foot, not the side: the
+// second radius is for rotations, which move both).
+TEST(EdgeContactCoherence, AcuteCornerSinking)
+{
+	const Real c = 0.4 * std::cos(M_PI / 6), s = 0.4 * std::sin(M_PI / 6);
+	const std::vector<Vec2> leaning { { 0, 0 }, { 0.5, 0 }, { 0.5 + c, s }, { c, s } }; // 30° at (0, 0)
+	double                  decided = 0;
+	for (int k = 0; k < 4; ++k) {
+		// tilted by 0.06 rad about its obtuse corner (0.5, 0), which is 1 cm deep; the sharp corner
+		// starts 1.4-2.3 cm above the line and ends 0.7-1.6 cm below it
+		const Real        tilt = -0.06, gap = 0.01 + 0.003 * k;
+		std::vector<Vec2> b;
+		for (const Vec2& v : leaning) {
+			const Vec2 r = v - Vec2(0.5, 0);
+			b.push_back(Vec2(0.5, -gap) + Vec2(std::cos(tilt) * r.x() - std::sin(tilt) * r.y(), std::sin(tilt) * r.x() + std::cos(tilt) * r.y()));
+		}
+		decided += followInFrameOfA(Block(rect(-1, -0.5, 2, 0.5)), Block(b), 3000, 1e-8, 1e-8, 20 + k, 0, Vec2(0, -1e-5)) / 4;
+	}
+	EXPECT_GT(decided, 0.5);
 }
 
 // Random convex polygons (3-8 vertices) overlapping slightly, followed with random motions; with an
