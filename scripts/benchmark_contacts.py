@@ -17,7 +17,9 @@ thread comparison. Each scene is first settled under gravity (untimed, until no 
 V_SETTLED, at most SETTLE_MAX steps), then STEPS steps are timed with O.timingEnabled=True.
 Prints a Markdown table and writes docs/benchmarks.md (table, per-engine timing, machine, command).
 With --alternate it only prints CPU time per contact-step of exact RBSM, frozen RBSM and spheres, each in a scene
-of its own, run in turns; the least turn of each is compared (for a noisy machine; writes nothing).
+of its own, run in turns; the least turn of each is compared (for a noisy machine; writes nothing). With
+--callgrind-window MODE it settles one scene and counts the instructions of 20 steps under callgrind
+(scripts/benchmarks/floor.sh runs it).
 This is a benchmark, not a test: it asserts nothing; it reports whether the RBSM contact count after settling
 depends on the collider's verletDist (it should not).
 """
@@ -377,9 +379,30 @@ def run_alternate(rounds=12, steps=150):
               % (name, c[0], c[len(c) // 2], rounds, steps, O.interactions.countReal(), c[0] / sph), flush=True)
 
 
+def run_callgrind_window(mode, warm=10, steps=20):
+    """Build and settle one scene (mode: exact, frozen, spheres, or floor: the exact wall, with the switch of
+    scripts/benchmarks/floor_experiment.patch thrown after settling), run `warm` steps, then `steps` steps with
+    valgrind's callgrind instrumentation on (callgrind_control; the process must run under
+    `valgrind --tool=callgrind --instr-atstart=no`). Prints the real contacts. For scripts/benchmarks/floor.sh."""
+    if mode == "spheres":
+        build_spheres()
+    else:
+        build_wall(nIP=2, update_tolerance=UT if mode == "frozen" else 0.0)
+    settle()
+    if mode == "floor":  # read by the patched functors (floor_experiment.patch) from this step on
+        os.environ["RBSM_NULL_FROM"] = str(O.iter)
+    O.run(warm, True)
+    subprocess.run(["callgrind_control", "-i", "on", str(os.getpid())], stdout=subprocess.DEVNULL, check=True)
+    O.run(steps, True)
+    subprocess.run(["callgrind_control", "-i", "off", str(os.getpid())], stdout=subprocess.DEVNULL, check=True)
+    print("CALLGRIND_WINDOW mode %s contacts %d steps %d" % (mode, O.interactions.countReal(), steps), flush=True)
+
+
 if "--child" in sys.argv:
     run_child()
 elif "--alternate" in sys.argv:
     run_alternate()
+elif "--callgrind-window" in sys.argv:
+    run_callgrind_window(sys.argv[sys.argv.index("--callgrind-window") + 1])
 else:
     main()
