@@ -9,6 +9,7 @@ PACKAGES=(
   libeigen3-dev libboost-python-dev libboost-serialization-dev python3-dev libcgal-dev
   libgtest-dev googletest               # C++ unit tests
   python3-pytest python3-numpy python3-matplotlib python3-vtk9   # Python tests, post-processing
+  valgrind                              # benchmarks: instruction counts (callgrind; scripts/benchmarks/)
 )
 
 if [ "$(id -u)" -eq 0 ]; then
