@@ -4,7 +4,8 @@
 # and on the wall with the RBSM functors switched off after settling (the "floor": NewtonIntegrator, the
 # interaction loop's dispatch, Ig2 returning at once, Law2 applying each joint's last force and torques through
 # YADE's ForceContainer). The floor needs a build with scripts/benchmarks/floor_experiment.patch, made here in
-# a git worktree of HEAD (never in the plugin). About 10 minutes on 2 cores (the scenes settle under valgrind).
+# a git worktree of HEAD (never in the plugin). About 4 minutes on 2 cores with a warm ccache (the four scenes
+# settle under valgrind), more when the worktree's plugin build starts cold.
 #
 #   bash scripts/benchmarks/floor.sh            # uses build/ for the plugin as it is
 set -euo pipefail

@@ -252,8 +252,8 @@ TEST(EdgeContactCoherence, AcuteCornerSinking)
 	const std::vector<Vec2> leaning { { 0, 0 }, { 0.5, 0 }, { 0.5 + c, s }, { c, s } }; // 30° at (0, 0)
 	double                  decided = 0;
 	for (int k = 0; k < 4; ++k) {
-		// tilted by 0.06 rad about its obtuse corner (0.5, 0), which is 1 cm deep; the sharp corner
-		// starts 1.4-2.3 cm above the line and ends 0.7-1.6 cm below it
+		// tilted by 0.06 rad about its obtuse corner (0.5, 0), which starts 1.0-1.9 cm deep; the sharp
+		// corner starts 2.0-1.1 cm above the line and, 3 cm lower, ends 1.0-1.9 cm below it
 		const Real        tilt = -0.06, gap = 0.01 + 0.003 * k;
 		std::vector<Vec2> b;
 		for (const Vec2& v : leaning) {
