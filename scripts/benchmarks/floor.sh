@@ -2,8 +2,8 @@
 # How much of an RBSM contact-step is YADE's own work: callgrind instructions per contact-step on the settled
 # 40 x 40 running-bond wall of scripts/benchmark_contacts.py (exact and frozen kinematics), on its sphere stack,
 # and on the wall with the RBSM functors switched off after settling (the "floor": NewtonIntegrator, the
-# interaction loop's dispatch, Ig2 returning at once, Law2 applying each joint's last force and torques through
-# YADE's ForceContainer). The floor needs a build with scripts/benchmarks/floor_experiment.patch, made here in
+# interaction loop's dispatch, Ig2 returning at once, Law2 making only its four ForceContainer calls, with
+# stand-in values). The floor needs a build with scripts/benchmarks/floor_experiment.patch, made here in
 # a git worktree of HEAD (never in the plugin). About 4 minutes on 2 cores with a warm ccache (the four scenes
 # settle under valgrind), more when the worktree's plugin build starts cold.
 #
