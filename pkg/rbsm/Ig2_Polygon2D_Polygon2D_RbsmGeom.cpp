@@ -74,14 +74,8 @@ namespace {
 	std::atomic<int> periodicReports { 0 };
 	void             reportPeriodic(const Interaction& I, Scene& scene)
 	{
-		rbsm_report::stopAfterThisStep(scene);
-		rbsm_report::limited(periodicReports, [&](bool last) {
-			std::ostringstream msg;
-			msg << "yade-rbsm: ERROR: Ig2_Polygon2D_Polygon2D_RbsmGeom: bodies #" << I.getId1() << " and #" << I.getId2()
-			    << " meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported; the run stops after step "
-			    << scene.iter << (last ? "; further such errors are not shown" : "");
-			return msg.str();
-		});
+		rbsm_report::stopForPair(periodicReports, scene, "Ig2_Polygon2D_Polygon2D_RbsmGeom", I.getId1(), I.getId2(),
+		                         "meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported");
 	}
 
 	// Overlaps deeper than this fraction of the smaller block are outside what the small-strain

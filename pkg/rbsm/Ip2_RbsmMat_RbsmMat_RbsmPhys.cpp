@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
-#include <sstream>
 
 namespace yade {
 
@@ -17,14 +16,8 @@ namespace {
 	std::atomic<int> mixedReports { 0 };
 	void             reportMixedPlaneStates(const Interaction& I, Scene& scene)
 	{
-		rbsm_report::stopAfterThisStep(scene);
-		rbsm_report::limited(mixedReports, [&](bool last) {
-			std::ostringstream msg;
-			msg << "yade-rbsm: ERROR: Ip2_RbsmMat_RbsmMat_RbsmPhys: bodies #" << I.getId1() << " and #" << I.getId2()
-			    << " mix plane strain and plane stress materials (RbsmMat.planeStrain); the run stops after step " << scene.iter
-			    << (last ? "; further such errors are not shown" : "");
-			return msg.str();
-		});
+		rbsm_report::stopForPair(mixedReports, scene, "Ip2_RbsmMat_RbsmMat_RbsmPhys", I.getId1(), I.getId2(),
+		                         "mix plane strain and plane stress materials (RbsmMat.planeStrain)");
 	}
 }
 

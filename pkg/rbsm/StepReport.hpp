@@ -7,6 +7,7 @@
 #include <atomic>
 #include <iostream>
 #include <mutex>
+#include <sstream>
 #include <string>
 
 namespace yade {
@@ -27,6 +28,20 @@ namespace rbsm_report {
 		static std::mutex           stop;
 		const std::lock_guard<std::mutex> lock(stop);
 		scene.stopAtIter = scene.iter + 1;
+	}
+
+	/// A pair of bodies the model cannot handle, found by functor `who` during a step: the run stops
+	/// after this step, and the line "yade-rbsm: ERROR: who: bodies #id1 and #id2 problem; the run
+	/// stops after step N" is printed as limited() prints.
+	inline void stopForPair(std::atomic<int>& count, Scene& scene, const char* who, int id1, int id2, const char* problem)
+	{
+		stopAfterThisStep(scene);
+		limited(count, [&](bool last) {
+			std::ostringstream msg;
+			msg << "yade-rbsm: ERROR: " << who << ": bodies #" << id1 << " and #" << id2 << " " << problem << "; the run stops after step "
+			    << scene.iter << (last ? "; further such errors are not shown" : "");
+			return msg.str();
+		});
 	}
 } // namespace rbsm_report
 } // namespace yade
