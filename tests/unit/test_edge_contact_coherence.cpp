@@ -70,6 +70,15 @@ void expectSame(const EdgeContact& a, const EdgeContact& b, int step)
 // when the search is skipped.
 bool samePose(const SearchMemory& a, const SearchMemory& b) { return a.rel == b.rel && a.relCos == b.relCos && a.relSin == b.relSin; }
 
+// What a caller carries to the next step, as Ig2 does: the contact's edge as the hint, and the memory
+// only while the blocks touch.
+void carryOver(const EdgeContact& c, ContactHint& hint, bool& haveHint, SearchMemory& memory)
+{
+	hint     = ContactHint { c.refBody, c.refEdge };
+	haveHint = c.touching;
+	if (!c.touching) memory = SearchMemory {};
+}
+
 // Follows the pair for `steps` steps of random relative motion (translation up to dx, rotation up
 // to da per step, with a pull back towards the start so that the blocks stay in touch). Returns the
 // fraction of steps where the search was skipped.
@@ -101,9 +110,7 @@ double follow(Block A, Block B, int steps, Real dx, Real da, unsigned seed, Real
 		++compared;
 		// the memory is rewritten by every full search (the pose moved), kept by a skip
 		if (before.valid && samePose(memory, before)) ++skipped;
-		hint     = ContactHint { fast.refBody, fast.refEdge };
-		haveHint = fast.touching;
-		if (!fast.touching) memory = SearchMemory {}, haveHint = false;
+		carryOver(fast, hint, haveHint, memory);
 	}
 	const double fraction = double(skipped) / compared;
 	std::printf("    searches skipped: %d of %d steps (%.1f %%)\n", skipped, compared, 100 * fraction);
@@ -157,10 +164,8 @@ double followInFrameOfA(Block A, Block B, int steps, Real dx, Real da, unsigned 
 			        << "step " << step << ": followContact decided a step where edgeContact searched";
 			++decided;
 		}
-		memory   = afterFull;
-		hint     = ContactHint { full.refBody, full.refEdge };
-		haveHint = full.touching;
-		if (!full.touching) memory = SearchMemory {}, haveHint = false;
+		memory = afterFull;
+		carryOver(full, hint, haveHint, memory);
 	}
 	const double fraction = double(decided) / steps;
 	std::printf("    steps decided by followContact: %d of %d (%.1f %%)\n", decided, steps, 100 * fraction);
