@@ -12,7 +12,7 @@ sys.path.insert(0, os.path.normpath(os.path.join(HERE, "..", "..", "py")))
 SCENE = r"""
 import math
 from yade_rbsm import polygon2d, engines
-rock = RbsmMat(young=2e8, poisson=0.25, density=2403, frictionAngle=math.radians(35), cohesion=1e4,
+rock = RbsmMat(young=2e8, poisson=0.25, planeStrain=False, density=2403, frictionAngle=math.radians(35), cohesion=1e4,
                tensileStrength=5e3, label="rock")
 soil = RbsmMat(young=5e7, poisson=0.3, planeStrain=False, density=1800, frictionAngle=math.radians(25))
 O.materials.append([rock, soil])

@@ -8,7 +8,9 @@ from yaderun import run_ok
 
 ROUND_TRIP = SCENE + SNAPSHOT + r"""
 import yade_rbsm.io as io
-O.run(STEPS, True)
+if STEPS:
+    O.run(STEPS, True)
+assert O.iter == STEPS, O.iter
 before = snapshot()
 assert io.export_blocks("blocks.csv") == len(O.bodies)
 O.reset()
@@ -50,11 +52,13 @@ def test_imported_scene_runs_like_the_original():
 import yade_rbsm.io as io
 io.export_blocks("blocks.csv")
 O.run(400, True)
+assert O.iter == 400, O.iter
 orig = [list(b.state.pos) + [b.state.angVel[2]] for b in O.bodies]
 O.reset()
 O.bodies.append(io.import_blocks("blocks.csv"))
 O.engines = engines(gravity=(0, -9.81, 0), contact_damping=0.1)
 O.run(400, True)
+assert O.iter == 400, O.iter
 report(orig=orig, new=[list(b.state.pos) + [b.state.angVel[2]] for b in O.bodies])
 """
     (r,) = run_ok(script)

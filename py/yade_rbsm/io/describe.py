@@ -169,8 +169,13 @@ def describe(path, known=None):
 
 def main(argv):
     if len(argv) < 1 or argv[0] in ("-h", "--help"):
-        print(__doc__.strip().split("\n\n")[0] + "\n\nusage: describe.py SAVE_FILE [SAVE_FILE ...]")
+        print(__doc__.strip().split("\n\n")[0] + "\n\nusage: describe.py SAVE_FILE [SAVE_FILE ...]\n"
+              "       describe.py --list-local   (the classes of the local YADE)")
         return 2
+    if argv[0] == "--list-local":
+        known = local_yade_classes()
+        print("YADE-CLASSES " + " ".join(sorted(known)) if known is not None else "describe: no YADE to ask")
+        return 0 if known is not None else 2
     status = 0
     for path in argv:
         try:
