@@ -147,3 +147,25 @@ except ValueError as e:
 """
     (r,) = run_ok(script, workdir=str(tmp_path))
     assert r["error"] == "blocks.csv:1: material 'rock' of the file differs from O.materials' 'rock' in density"
+
+
+def test_materials_outside_o_materials_and_a_moving_wall(tmp_path):
+    """Blocks whose material is not in O.materials (two blocks share one, a third has another) get
+    one definition per material; a fixed block's velocity (a wall moved kinematically) survives."""
+    script = r"""
+import yade_rbsm.io as io
+from yade_rbsm import polygon2d
+a, b = RbsmMat(density=2000), RbsmMat(density=2100, cohesion=5.0)
+O.bodies.append([polygon2d([(0, 0), (1, 0), (1, 1), (0, 1)], a), polygon2d([(2, 0), (3, 0), (3, 1)], a),
+                 polygon2d([(4, 0), (5, 0), (5, 1)], b), polygon2d([(0, -2), (5, -2), (5, -1)], a, fixed=True)])
+O.bodies[3].state.vel = (0.25, 0, 0)
+io.export_blocks("blocks.csv")
+O.reset()
+bs = io.import_blocks("blocks.csv")
+report(text=open("blocks.csv").read(), mats=[(x.material.label, x.material.density, x.material.cohesion) for x in bs],
+       n=len(O.materials), vel=list(bs[3].state.vel), fixed=bs[3].state.blockedDOFs)
+"""
+    (r,) = run_ok(script, workdir=str(tmp_path))
+    assert r["text"].count("# material ") == 2, r["text"]
+    assert r["mats"] == [["unlisted0", 2000, 0], ["unlisted0", 2000, 0], ["unlisted1", 2100, 5.0], ["unlisted0", 2000, 0]]
+    assert r["n"] == 2 and r["vel"] == [0.25, 0, 0] and r["fixed"] == "xyzXYZ"

@@ -42,15 +42,22 @@ def _material_line(label, m):
     return "# material label=%s %s" % (label, vals)
 
 
+def _key(m):
+    """Identity of a material: its index in O.materials; its values for one not in O.materials (each
+    access to b.material gives a new Python object, so id() cannot tell)."""
+    return m.id if m.id >= 0 else tuple(sorted(m.dict().items()))
+
+
 def _labels(blocks, O):
-    """Label of each material used (its label, else 'mat<id>'); two materials sharing a label are an error."""
+    """Label of each material used (its label, else 'mat<id>', 'unlisted<n>' for a material not in
+    O.materials); two materials sharing a label are an error."""
     labels, by_label = {}, {}
     for b in blocks:
         m = b.material
-        key = id(m) if m.id < 0 else m.id
+        key = _key(m)
         if key in labels:
             continue
-        label = m.label or ("mat%d" % m.id if m.id >= 0 else "mat_unlisted%d" % len(labels))
+        label = m.label or ("mat%d" % m.id if m.id >= 0 else "unlisted%d" % len(labels))
         if label in by_label:
             raise ValueError("export_blocks: two different materials are labelled %r (bodies #%d and #%d): "
                              "give them distinct labels" % (label, by_label[label][1], b.id))
@@ -90,7 +97,7 @@ def export_blocks(filename, bodies=None, O=None):
                    + [c % (i + 1) for i in range(nmax) for c in ("x%d", "y%d")])
         for b in blocks:
             m, st = b.material, b.state
-            row = [b.id, labels[id(m) if m.id < 0 else m.id], 1 if st.blockedDOFs == "xyzXYZ" else 0,
+            row = [b.id, labels[_key(m)], 1 if st.blockedDOFs == "xyzXYZ" else 0,
                    _num(b.shape.thickness), _num(st.vel[0]), _num(st.vel[1]), _num(st.angVel[2])]
             for v in b.shape.worldVertices(st.pos, st.ori):
                 row += [_num(v[0]), _num(v[1])]
@@ -217,9 +224,9 @@ def import_blocks(filename, materials=None, O=None):
                 b = polygon2d(pts, mat, thickness=thickness, fixed=bool(fixed))
             except ValueError as e:
                 raise ValueError("%s: %s" % (where, e)) from None
-            if not fixed:
-                b.state.vel = (vel[0], vel[1], 0)
-                b.state.angVel = (0, 0, vel[2])
+            # a fixed block keeps its velocity too: YADE moves it kinematically (a moving wall)
+            b.state.vel = (vel[0], vel[1], 0)
+            b.state.angVel = (0, 0, vel[2])
             bodies.append(b)
     if header is None:
         raise ValueError("%s: no header line (material,x1,y1,...)" % filename)
