@@ -1,0 +1,124 @@
+"""DXF import of closed polylines as blocks (yade_rbsm.io.import_dxf), from a drawing the test makes
+with ezdxf; layers mapped to materials; clockwise outlines reversed; clear errors for the rest; and
+export_dxf -> import_dxf gives the same blocks."""
+import ezdxf
+import pytest
+from yaderun import run_ok
+
+SQUARE = [(0, 0), (1, 0), (1, 1), (0, 1)]
+
+
+def drawing(path):
+    """Base (layer BASE, fixed), a CCW block, a CW block (reversed on import), a POLYLINE block, one
+    closed by repeating its first vertex with a doubled vertex, and a LINE and a TEXT (skipped)."""
+    doc = ezdxf.new("R2010")
+    msp = doc.modelspace()
+    for layer in ("BASE", "Rock", "Soil"):
+        doc.layers.add(layer)
+    msp.add_lwpolyline([(-5, -1), (5, -1), (5, 0), (-5, 0)], close=True, dxfattribs={"layer": "BASE"})
+    msp.add_lwpolyline(SQUARE, close=True, dxfattribs={"layer": "Rock"})
+    msp.add_lwpolyline([(2, 0), (2, 2), (3, 2), (3, 0)], close=True, dxfattribs={"layer": "Soil"})  # clockwise
+    msp.add_polyline2d([(4, 0), (4.5, 0), (4.25, 0.5)], close=True, dxfattribs={"layer": "Soil"})
+    msp.add_lwpolyline([(-2, 0), (-1, 0), (-1, 0), (-1.5, 1), (-2, 0)], dxfattribs={"layer": "rock"})
+    msp.add_line((0, 5), (1, 5))
+    msp.add_text("joint set A")
+    doc.saveas(path)
+
+
+IMPORT = r"""
+import warnings
+import yade_rbsm.io as io
+rock = RbsmMat(label="rock", density=2500)
+soil = RbsmMat(label="soil", density=1800)
+O.materials.append([rock, soil])
+with warnings.catch_warnings(record=True) as w:
+    warnings.simplefilter("always")
+    bs = io.import_dxf("drawing.dxf", {"BASE": rock, "Rock": "rock", "Soil": soil}, fixed_layers=["base"])
+O.bodies.append(bs)
+report(n=len(bs), mats=[b.material.label for b in bs], fixed=[b.state.blockedDOFs for b in bs],
+       areas=[b.shape.area for b in bs], pos=[list(b.state.pos)[:2] for b in bs],
+       world=[[list(v) for v in b.shape.worldVertices(b.state.pos, b.state.ori)] for b in bs],
+       warnings=[str(x.message) for x in w])
+"""
+
+
+def test_import_maps_layers_and_reverses_clockwise(tmp_path):
+    drawing(str(tmp_path / "drawing.dxf"))
+    (r,) = run_ok(IMPORT, workdir=str(tmp_path))
+    assert r["n"] == 5
+    assert r["mats"] == ["rock", "rock", "soil", "soil", "rock"]  # layer names match case-insensitively
+    assert r["fixed"] == ["xyzXYZ", "zXY", "zXY", "zXY", "zXY"]
+    assert r["areas"] == pytest.approx([10, 1, 2, 0.125, 0.5])
+    assert r["pos"][2] == pytest.approx([2.5, 1])
+    # the clockwise rectangle, reversed: counter-clockwise from its last drawn vertex
+    assert sum(r["world"][2], []) == pytest.approx([3, 0, 3, 2, 2, 2, 2, 0])
+    assert r["warnings"] == ["import_dxf: drawing.dxf: skipped 1 LINE, 1 TEXT (only LWPOLYLINE and POLYLINE make blocks)"]
+
+
+BAD = {
+    "open": (lambda m: m.add_lwpolyline(SQUARE, dxfattribs={"layer": "Rock"}), "open polyline"),
+    "bow-tie": (lambda m: m.add_lwpolyline([(0, 0), (1, 1), (1, 0), (0, 1)], close=True, dxfattribs={"layer": "Rock"}),
+                "self-intersecting polyline: edge 0 (0, 0)-(1, 1) meets edge 2 (1, 0)-(0, 1)"),
+    "touching": (lambda m: m.add_lwpolyline([(0, 0), (2, 0), (2, 2), (1, 0), (0, 2)], close=True, dxfattribs={"layer": "Rock"}),
+                 "self-intersecting polyline"),
+    "non-convex": (lambda m: m.add_lwpolyline([(0, 0), (2, 0), (2, 2), (1, 1), (0, 2)], close=True, dxfattribs={"layer": "Rock"}),
+                   "polygon2d([(0, 0), (2, 0), (2, 2), (1, 1), ... 5 vertices]): "),
+    "arc": (lambda m: m.add_lwpolyline([(0, 0, 0.5), (1, 0, 0), (1, 1, 0)], format="xyb", close=True, dxfattribs={"layer": "Rock"}),
+            "arc segment (bulge)"),
+    "layer": (lambda m: m.add_lwpolyline(SQUARE, close=True, dxfattribs={"layer": "Clay"}),
+              "layer 'Clay' has no material (materials= maps: 'Rock')"),
+    "two points": (lambda m: m.add_lwpolyline([(0, 0), (1, 0), (0, 0)], close=True, dxfattribs={"layer": "Rock"}),
+                   "fewer than 3 distinct vertices"),
+}
+
+
+def test_bad_polylines_are_refused_by_name(tmp_path):
+    for name, (add, _) in BAD.items():
+        doc = ezdxf.new("R2010")
+        add(doc.modelspace())
+        doc.saveas(str(tmp_path / ("%s.dxf" % name)))
+    (tmp_path / "broken.dxf").write_text("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n")
+    script = r"""
+import yade_rbsm.io as io
+errors = {}
+for name in NAMES + ["broken", "missing"]:
+    try:
+        io.import_dxf(name + ".dxf", {"Rock": RbsmMat(density=2000)})
+    except ValueError as e:
+        errors[name] = str(e)
+report(errors=errors)
+""".replace("NAMES", repr(list(BAD)))
+    (r,) = run_ok(script, workdir=str(tmp_path))
+    errors = r["errors"]
+    for name, (_, message) in BAD.items():
+        assert name in errors, name
+        entity, problem = errors[name].split(": ", 2)[:2], errors[name].split(": ", 2)[2]
+        assert entity[0] == name + ".dxf" and entity[1].startswith("LWPOLYLINE #"), errors[name]
+        assert " on layer " in entity[1]
+        assert problem.startswith(message), (name, errors[name])
+    assert errors["broken"].startswith("broken.dxf: ")
+    assert errors["missing"].startswith("missing.dxf: cannot read the file")
+
+
+def test_export_then_import_gives_the_same_blocks(tmp_path):
+    script = r"""
+import math
+import yade_rbsm.io as io
+from yade_rbsm import polygon2d
+rock = RbsmMat(label="rock", density=2500)
+O.materials.append(rock)
+O.bodies.append(polygon2d([(-5, -1), (5, -1), (5, 0), (-5, 0)], rock, fixed=True))
+O.bodies.append(polygon2d([(3 + math.cos(a), 2 + math.sin(a)) for a in [0.1 + 2 * math.pi * k / 6 for k in range(6)]], rock))
+O.bodies[1].state.ori = Quaternion((0, 0, 1), 0.4)   # rotated: the world vertices differ from the drawn ones
+def world():
+    return [[list(v) for v in b.shape.worldVertices(b.state.pos, b.state.ori)] for b in O.bodies]
+before = world()
+assert io.export_dxf("out.dxf") == 2
+O.bodies.clear()
+O.bodies.append(io.import_dxf("out.dxf", {"rock": rock, "rock_fixed": rock}, fixed_layers=["rock_fixed"]))
+report(before=before, after=world(), fixed=[b.state.blockedDOFs for b in O.bodies])
+"""
+    (r,) = run_ok(script, workdir=str(tmp_path))
+    assert r["fixed"] == ["xyzXYZ", "zXY"]
+    for b0, b1 in zip(r["before"], r["after"]):
+        assert sum(b1, []) == pytest.approx(sum(b0, []), rel=1e-14, abs=1e-14)
