@@ -215,6 +215,7 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	g->separation = c.separation;
 	g->refBody    = c.refBody;
 	g->refEdge    = c.refEdge;
+	if (c.incEdge >= 0) g->incEdge = c.incEdge; // (a frozen step keeps the last exact one)
 	g->centroid1  = state1.pos.head<2>();
 	g->centroid2  = state2.pos.head<2>();
 	g->h1         = rbsm::distanceToLine(g->centroid1, c.p0, c.normal);

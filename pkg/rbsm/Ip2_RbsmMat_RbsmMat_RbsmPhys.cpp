@@ -24,6 +24,7 @@ namespace {
 void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shared_ptr<Material>& b2, const shared_ptr<Interaction>& I)
 {
 	if (I->phys) return; // properties are set once, when the joint forms
+	jointsMade.fetch_add(1, std::memory_order_relaxed);
 	const auto* g = dynamic_cast<const RbsmGeom*>(I->geom.get());
 	if (!g) throw std::runtime_error("Ip2_RbsmMat_RbsmMat_RbsmPhys: the interaction has no RbsmGeom (use Ig2_Polygon2D_Polygon2D_RbsmGeom)");
 	const RbsmMat& m1 = static_cast<const RbsmMat&>(*b1);

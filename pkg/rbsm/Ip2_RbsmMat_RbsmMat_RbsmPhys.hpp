@@ -4,6 +4,8 @@
 #include <pkg/rbsm/RbsmMat.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
 
+#include <atomic>
+
 namespace yade {
 
 class Ip2_RbsmMat_RbsmMat_RbsmPhys : public IPhysFunctor {
@@ -31,6 +33,8 @@ public:
 	);
 	// clang-format on
 	FUNCTOR2D(RbsmMat, RbsmMat);
+	//! Joints made so far (any scene): RbsmTimeStepper looks for new joints only when it has grown.
+	static inline std::atomic<long> jointsMade { 0 };
 };
 REGISTER_SERIALIZABLE(Ip2_RbsmMat_RbsmMat_RbsmPhys);
 

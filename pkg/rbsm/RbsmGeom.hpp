@@ -46,6 +46,7 @@ public:
 		((Real, h2, 0, Attr::readonly, "Distance from block 2's centroid to the contact line [m] (Kawai's h2)."))
 		((int, refBody, 0, Attr::readonly, "Which block holds the reference edge (1 or 2); kept from step to step unless another edge is clearly better."))
 		((int, refEdge, -1, Attr::readonly, "Index of the reference edge (vertex i → i+1) on that block."))
+		((int, incEdge, -1, Attr::readonly, "Index of the incident edge (the other block's edge that faces the reference edge, vertex i → i+1) at the last exact update; -1 if unknown."))
 		((int, nIP, 0, Attr::readonly, "Number of integration points along the contact (Gauss-Legendre rule of :yref:`positions<RbsmGeom.positions>` and :yref:`weights<RbsmGeom.weights>`), from :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.nIP` when the contact was made."))
 		((int, frozenSteps, 0, Attr::readonly, "Steps since the contact geometry was last computed exactly (0: exact at this step). Above 0 only with :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance` > 0, while the joint is followed as material points."))
 		((bool, lost, false, (Attr::readonly | Attr::noSave), "The blocks of this joint no longer face each other within reach (the facing edge clipped away, or separated beyond what intact springs can hold): the law breaks every point and removes the joint.")),

@@ -1,112 +1,361 @@
+#include <pkg/rbsm/Ip2_RbsmMat_RbsmMat_RbsmPhys.hpp>
+#include <pkg/rbsm/Polygon2D.hpp>
 #include <pkg/rbsm/RbsmGeom.hpp>
+#include <pkg/rbsm/RbsmMat.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
 #include <pkg/rbsm/RbsmTimeStepper.hpp>
+#include <pkg/rbsm/StepReport.hpp>
+#include <pkg/rbsm/kernel/KawaiSprings.hpp>
 #include <core/Scene.hpp>
 
+#include <boost/python.hpp>
+
+#include <cmath>
 #include <sstream>
 
 namespace yade {
 
 YADE_PLUGIN((RbsmTimeStepper));
 
+namespace {
+	constexpr size_t kRow = 3; // rowBounds per body: Gershgorin ω² of its rows, Σ c·A, Σ min(kn, ks)·A of its joints
+
+	bool          isFixed(const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL; }
+	rbsm::DynBody dynBody(const State& s) { return rbsm::DynBody { s.mass, s.inertia.z(), s.pos.head<2>(), isFixed(s) }; }
+
+	const Polygon2D* polygonOf(const Body& b)
+	{
+		const Shape* s = b.shape.get();
+		return s && s->getClassIndex() == Polygon2D::getClassIndexStatic() ? static_cast<const Polygon2D*>(s) : nullptr;
+	}
+
+	// the RBSM joint of an interaction, or false (class indices: this runs over every interaction)
+	bool rbsmJoint(const Interaction& I, const RbsmGeom*& g, const RbsmPhys*& p)
+	{
+		if (!I.isReal()) return false;
+		const IGeom* ig = I.geom.get();
+		const IPhys* ip = I.phys.get();
+		if (!ig || !ip || ig->getClassIndex() != RbsmGeom::getClassIndexStatic() || ip->getClassIndex() != RbsmPhys::getClassIndexStatic()) return false;
+		g = static_cast<const RbsmGeom*>(ig);
+		p = static_cast<const RbsmPhys*>(ip);
+		return true;
+	}
+
+	Vector2r worldVertex(const Polygon2D& poly, const State& s, int i)
+	{
+		Real c, sn;
+		planarCosSin(s.ori, c, sn);
+		const Vector2r& v = poly.vertices[size_t(i)];
+		return s.pos.head<2>() + Vector2r(c * v.x() - sn * v.y(), sn * v.x() + c * v.y());
+	}
+
+	// NewtonIntegrator's damping, read through its Python attributes (the plugin does not declare
+	// YADE's integrator): once per full estimate.
+	Real newtonDampingOf(const Scene& scene)
+	{
+		for (const auto& e : scene.engines) {
+			if (!e || e->getClassName() != "NewtonIntegrator") continue;
+			const PyGILState_STATE gil = PyGILState_Ensure();
+			Real                   d   = 0;
+			try {
+				d = boost::python::extract<Real>(e->pyDict()["damping"]);
+			} catch (const boost::python::error_already_set&) {
+				PyErr_Clear();
+			}
+			PyGILState_Release(gil);
+			return std::isfinite(d) && d > 0 ? d : 0;
+		}
+		return 0;
+	}
+
+	std::atomic<int> motionReports { 0 };
+}
+
+void RbsmTimeStepper::postLoad(RbsmTimeStepper&)
+{
+	if (!(safetyFactor > 0 && safetyFactor <= 1))
+		throw std::invalid_argument("RbsmTimeStepper.safetyFactor: must be in (0, 1] (got " + std::to_string(safetyFactor) + ")");
+	if (interval < 1) throw std::invalid_argument("RbsmTimeStepper.interval: must be >= 1 (got " + std::to_string(interval) + ")");
+	if (!(maxDt > 0)) throw std::invalid_argument("RbsmTimeStepper.maxDt: must be > 0 (got " + std::to_string(maxDt) + ")");
+	if (!(std::isfinite(maxStepMotion) && maxStepMotion >= 0))
+		throw std::invalid_argument("RbsmTimeStepper.maxStepMotion: must be a finite fraction >= 0 (got " + std::to_string(maxStepMotion) + "; 0 = no check)");
+}
+
+// The joint as the kernel's stiffness sees it: the segment it reaches once a closing corner lies flat
+// (rbsm::closingContact), at the rule's points.
+bool RbsmTimeStepper::jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const
+{
+	const RbsmGeom* g;
+	const RbsmPhys* p;
+	if (!rbsmJoint(I, g, p) || !g->rule) return false;
+	c.body1   = body1;
+	c.body2   = body2;
+	c.normal  = g->normal;
+	c.tangent = g->tangent();
+	c.kn      = p->kn;
+	c.ks      = p->ks;
+	Vector2r q0 = g->p0, q1 = g->p1;
+	const auto&      bodies = scene->bodies->body;
+	const Body&      ref    = *bodies[g->refBody == 2 ? I.getId2() : I.getId1()];
+	const Body&      inc    = *bodies[g->refBody == 2 ? I.getId1() : I.getId2()];
+	const Polygon2D *R = polygonOf(ref), *N = polygonOf(inc);
+	if (R && N && g->refEdge >= 0 && g->incEdge >= 0 && g->refEdge < int(R->vertices.size()) && g->incEdge < int(N->vertices.size())) {
+		const int nr = int(R->vertices.size()), ni = int(N->vertices.size());
+		std::tie(q0, q1) = rbsm::closingContact(
+		        worldVertex(*R, *ref.state, g->refEdge),
+		        worldVertex(*R, *ref.state, (g->refEdge + 1) % nr),
+		        worldVertex(*N, *inc.state, g->incEdge),
+		        worldVertex(*N, *inc.state, (g->incEdge + 1) % ni),
+		        q0,
+		        q1);
+	}
+	const Real length = (q1 - q0).norm();
+	c.points.clear(), c.areas.clear(); // (their capacity is kept)
+	for (int k = 0; k < g->nPoints(); k++) {
+		c.points.push_back(q0 + g->rule->s[k] * (q1 - q0));
+		c.areas.push_back(g->rule->w[k] * length * g->thickness);
+	}
+	return true;
+}
+
+// Joint dashpots (Law2's dampingRatio) lower the limit of the central-difference scheme, whose
+// velocity is half a step behind: dt ≤ (2/ω)(√(1+ξ²) − ξ) for a mode of frequency ω and damping
+// ratio ξ. Every eigenvalue lies below the Gershgorin bound ω̂_b² of some block b; for that block
+// the ratio is taken as ξ_b = β_b ω̂_b / 2, β_b = Σ c A / Σ k A over its joints (dashpot over the
+// softer spring). This is an estimate, not a bound. The bound through the whole damping matrix (C ≤
+// β K, β = max c/k of a single joint) is dominated by short corner joints, whose dashpots are stiff
+// per area but act on almost no area and belong to soft modes, and shrank the step of a brick wall
+// 30-fold (docs/benchmarks.md). tests/robustness/test_timestep.py checks ξ = 0.1, 0.3, 1.0.
+Real RbsmTimeStepper::blockDt(size_t id) const
+{
+	const Real w2 = rowBounds[kRow * id], dashpot = rowBounds[kRow * id + 1], spring = rowBounds[kRow * id + 2];
+	if (!(w2 > 0)) return std::numeric_limits<Real>::infinity();
+	const Real w = std::sqrt(w2), xi = spring > 0 ? dashpot / spring * w / 2 : 0;
+	return 2 / w * (std::sqrt(1 + xi * xi) - xi);
+}
+
+void RbsmTimeStepper::boundsHold(size_t nBodies)
+{
+	if (rowBounds.size() < kRow * nBodies) rowBounds.resize(kRow * nBodies, 0);
+}
+
 Real RbsmTimeStepper::estimate()
 {
 	const auto& bodies = scene->bodies->body;
-	dynBodies.clear();
+	dynBodies.clear(), dynIds.clear();
 	dynIndex.assign(bodies.size(), -1); // body id -> index in dynBodies
-	dashpot.clear(), spring.clear();    // per block: Σ c·A [N·s/m] and Σ min(kn, ks)·A [N/m] of its joints
+	rowBounds.assign(kRow * bodies.size(), 0);
 	size_t nContacts = 0;
 	for (const auto& I : *scene->interactions) {
-		if (!I->isReal()) continue;
-		// class indices instead of dynamic_cast (once per contact per check)
-		const IGeom* ig = I->geom.get();
-		const IPhys* ip = I->phys.get();
-		if (!ig || !ip || ig->getClassIndex() != RbsmGeom::getClassIndexStatic() || ip->getClassIndex() != RbsmPhys::getClassIndexStatic()) continue;
-		const auto* g = static_cast<const RbsmGeom*>(ig);
-		const auto* p = static_cast<const RbsmPhys*>(ip);
-		int         ends[2];
+		const RbsmGeom* g;
+		const RbsmPhys* p;
+		if (!rbsmJoint(*I, g, p)) continue;
+		int ends[2];
 		for (int side = 0; side < 2; side++) {
 			const Body::id_t id = side == 0 ? I->getId1() : I->getId2();
 			if (dynIndex[id] < 0) {
-				const State&  s = *bodies[id]->state;
-				rbsm::DynBody b;
-				b.mass       = s.mass;
-				b.inertia    = s.inertia.z();
-				b.centroid   = s.pos.head<2>();
-				b.fixed      = (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL;
 				dynIndex[id] = int(dynBodies.size());
-				dynBodies.push_back(b);
+				dynBodies.push_back(dynBody(*bodies[id]->state));
+				dynIds.push_back(id);
 			}
 			ends[side] = dynIndex[id];
 		}
-		// viscous joint damping: dashpot and (softer) spring of the joint, summed per block (see below)
-		if (p->dampingCoefficient > 0) {
-			const Real area = g->length * g->thickness;
-			for (int e : ends) {
-				if (int(dashpot.size()) <= e) dashpot.resize(e + 1, 0), spring.resize(e + 1, 0);
-				dashpot[e] += p->dampingCoefficient * area;
-				spring[e] += std::min(p->kn, p->ks) * area;
-			}
-		}
 		if (dynContacts.size() <= nContacts) dynContacts.emplace_back();
-		rbsm::DynContact& c = dynContacts[nContacts++];
-		c.body1             = ends[0];
-		c.body2             = ends[1];
-		c.normal            = g->normal;
-		c.tangent           = g->tangent();
-		c.kn                = p->kn;
-		c.ks                = p->ks;
-		c.points.clear(), c.areas.clear(); // (their capacity is kept)
-		for (int k = 0; k < g->nPoints(); k++) {
-			c.points.push_back(g->p0 + g->rule->s[k] * (g->p1 - g->p0));
-			c.areas.push_back(g->rule->w[k] * g->length * g->thickness);
+		rbsm::DynContact& c = dynContacts[nContacts];
+		if (!jointAsDynContact(*I, ends[0], ends[1], c)) continue;
+		nContacts++;
+		if (p->dampingCoefficient > 0) {
+			Real area = 0;
+			for (Real a : c.areas) area += a;
+			for (Body::id_t id : { I->getId1(), I->getId2() }) {
+				rowBounds[kRow * id + 1] += p->dampingCoefficient * area;
+				rowBounds[kRow * id + 2] += std::min(p->kn, p->ks) * area;
+			}
 		}
 	}
 	dynContacts.resize(nContacts);
 	std::vector<Real> omega2; // Gershgorin bound of each block's rows
-	const Real        undamped = rbsm::criticalTimeStepGershgorin(dynBodies, dynContacts, &omega2);
-	// Joint dashpots (Law2's dampingRatio) lower the limit of the central-difference scheme, whose
-	// velocity is half a step behind: dt ≤ (2/ω)(√(1+ξ²) − ξ) for a mode of frequency ω and damping
-	// ratio ξ. Every eigenvalue lies below the Gershgorin bound ω̂_b² of some block b; for that block
-	// the ratio is taken as ξ_b = β_b ω̂_b / 2, β_b = Σ c A / Σ k A over its joints (dashpot over the
-	// softer spring), and the step is the smallest (2/ω̂_b)(√(1+ξ_b²) − ξ_b). This is an estimate,
-	// not a bound. The bound through the whole damping matrix (C ≤ β K, β = max c/k of a single
-	// joint, with the system's ω̂) is dominated by short corner joints, whose dashpots are stiff
-	// per area but act on almost no area and belong to soft modes, and shrank the step of a brick
-	// wall 30-fold (docs/benchmarks.md). tests/robustness/test_timestep.py checks ξ = 0.1, 0.3, 1.0.
-	criticalDt = undamped;
-	for (size_t b = 0; b < dashpot.size() && b < omega2.size(); b++) {
-		if (!(spring[b] > 0 && dashpot[b] > 0 && omega2[b] > 0)) continue;
-		const Real w = std::sqrt(omega2[b]), xi = dashpot[b] / spring[b] * w / 2;
-		criticalDt   = std::min(criticalDt, 2 / w * (std::sqrt(1 + xi * xi) - xi));
+	rbsm::criticalTimeStepGershgorin(dynBodies, dynContacts, &omega2);
+	criticalDt   = std::numeric_limits<Real>::infinity();
+	criticalBody = -1;
+	for (size_t b = 0; b < dynIds.size(); b++) {
+		const size_t id         = size_t(dynIds[b]);
+		rowBounds[kRow * id] = omega2[b];
+		const Real dt           = blockDt(id);
+		if (dt < criticalDt) criticalDt = dt, criticalBody = int(id);
 	}
 	return criticalDt;
 }
 
+// A joint made since the last full estimate raises the Gershgorin bounds of its two blocks by its
+// own terms (rbsm::contactRowBounds), at the step it is made: no step runs with it unaccounted for.
+void RbsmTimeStepper::addJointsMadeThisStep()
+{
+	const auto& bodies = scene->bodies->body;
+	boundsHold(bodies.size());
+	rbsm::DynContact                 c;
+	const Real                       inf = std::numeric_limits<Real>::infinity();
+	for (const auto& I : *scene->interactions) {
+		if (I->iterMadeReal != scene->iter) continue;
+		const Body::id_t                 id1 = I->getId1(), id2 = I->getId2();
+		const std::vector<rbsm::DynBody> pair { dynBody(*bodies[id1]->state), dynBody(*bodies[id2]->state) };
+		if (!jointAsDynContact(*I, 0, 1, c)) continue;
+		Real add[2];
+		rbsm::contactRowBounds(pair, c, add[0], add[1]);
+		const RbsmPhys& p    = static_cast<const RbsmPhys&>(*I->phys);
+		Real            area = 0;
+		for (Real a : c.areas) area += a;
+		int side = 0;
+		for (Body::id_t id : { id1, id2 }) {
+			rowBounds[kRow * id] += add[side++];
+			if (p.dampingCoefficient > 0) {
+				rowBounds[kRow * id + 1] += p.dampingCoefficient * area;
+				rowBounds[kRow * id + 2] += std::min(p.kn, p.ks) * area;
+			}
+			const Real dt = blockDt(size_t(id));
+			if (dt < criticalDt || !(criticalDt < inf)) {
+				if (dt < inf) criticalDt = dt, criticalBody = id;
+			}
+		}
+	}
+}
+
+// The stiffest single joint each free block can form: one of its edges in full contact with the
+// partner that adds the least compliance (the smallest inner radius over modulus of any other block).
+Real RbsmTimeStepper::firstContactEstimate() const
+{
+	struct Candidate {
+		Real value = std::numeric_limits<Real>::infinity();
+		long id    = -1;
+	};
+	struct Block {
+		long                  id;
+		const Polygon2D*      poly;
+		Real                  En, Es, r;
+	};
+	std::vector<Block> blocks;
+	Candidate          bestN[2], bestS[2]; // the two least compliances r/E′ and r/2G, by different blocks
+	auto               keep = [](Candidate (&best)[2], Real v, long id) {
+                if (v < best[0].value) best[1] = best[0], best[0] = Candidate { v, id };
+                else if (v < best[1].value) best[1] = Candidate { v, id };
+	};
+	for (const auto& b : scene->bodies->body) {
+		if (!b) continue;
+		const Polygon2D* poly = polygonOf(*b);
+		const auto*      mat  = dynamic_cast<const RbsmMat*>(b->material.get());
+		if (!poly || !mat || poly->vertices.size() < 3) continue;
+		Real En, Es;
+		try {
+			const auto plane = mat->planeStrain ? rbsm::PlaneState::PlaneStrain : rbsm::PlaneState::PlaneStress;
+			En               = rbsm::constrainedModulus(mat->young, mat->poisson, plane);
+			Es               = 2 * rbsm::shearModulus(mat->young, mat->poisson);
+		} catch (const std::invalid_argument&) {
+			continue; // a material the joints refuse is reported where they meet it
+		}
+		const Real r = size_t(b->id) < inradius.size() ? inradius[b->id] : rbsm::centroidInradius(poly->vertices);
+		keep(bestN, r / En, b->id);
+		keep(bestS, r / Es, b->id);
+		blocks.push_back(Block { b->id, poly, En, Es, r });
+	}
+	Real top[2] = { 0, 0 }; // the two largest ω² of free blocks
+	for (const Block& k : blocks) {
+		const State& s = *scene->bodies->body[size_t(k.id)]->state;
+		if (isFixed(s)) continue;
+		const Real partnerN = bestN[0].id != k.id ? bestN[0].value : bestN[1].value;
+		const Real partnerS = bestS[0].id != k.id ? bestS[0].value : bestS[1].value;
+		if (!std::isfinite(partnerN) || !std::isfinite(partnerS)) continue; // nothing to meet
+		const Real w2 = rbsm::stiffestJointOmega2(dynBody(s), k.poly->vertices, k.En, k.Es, partnerN, partnerS, k.poly->thickness);
+		if (w2 > top[0]) top[1] = top[0], top[0] = w2;
+		else if (w2 > top[1]) top[1] = w2;
+	}
+	const Real w2 = top[0] + top[1]; // two free blocks meeting: at most the sum of their own ω²
+	return w2 > 0 ? 2 / std::sqrt(w2) : std::numeric_limits<Real>::infinity();
+}
+
+void RbsmTimeStepper::fullCheck()
+{
+	lastCheck = scene->iter;
+	inradius.assign(scene->bodies->body.size(), 0);
+	for (const auto& b : scene->bodies->body)
+		if (b)
+			if (const Polygon2D* poly = polygonOf(*b)) inradius[b->id] = rbsm::centroidInradius(poly->vertices);
+	estimate();
+	firstContactDt = firstContactEstimate();
+	newtonDamping  = newtonDampingOf(*scene);
+}
+
+// A block that moves by a good part of its own size in one step passes through thin neighbours
+// (tunnelling) or is exploding: never silent. Returns the step at which every block would move by
+// half that (for setDt: a block with short, soft edges, e.g. a near-circle, has a long stable step).
+Real RbsmTimeStepper::checkMotion()
+{
+	Real travelDt = std::numeric_limits<Real>::infinity();
+	if (!(maxStepMotion > 0)) return travelDt;
+	for (const auto& b : scene->bodies->body) {
+		if (!b) continue;
+		const Polygon2D* poly = polygonOf(*b);
+		const State&     s    = *b->state;
+		if (!poly || isFixed(s)) continue;
+		if (size_t(b->id) >= inradius.size()) inradius.resize(size_t(b->id) + 1, 0);
+		Real& r = inradius[b->id];
+		if (!(r > 0)) r = rbsm::centroidInradius(poly->vertices);
+		const Real speed = s.vel.head<2>().norm() + std::abs(s.angVel.z()) * poly->circumradius, motion = speed * scene->dt;
+		if (speed > 0) travelDt = std::min(travelDt, 0.5 * maxStepMotion * r / speed);
+		if (motion <= maxStepMotion * r) continue;
+		rbsm_report::stopAfterThisStep(*scene);
+		rbsm_report::limited(motionReports, [&](bool last) {
+			std::ostringstream msg;
+			msg << "yade-rbsm: ERROR: RbsmTimeStepper: body #" << b->id << " moves by " << motion << " m in one step at step " << scene->iter
+			    << " (velocity " << s.vel.head<2>().norm() << " m/s, angular velocity " << s.angVel.z() << " rad/s, O.dt = " << scene->dt
+			    << " s), more than maxStepMotion = " << maxStepMotion << " of its inner radius " << r
+			    << " m: it can pass through other blocks (tunnelling) or the scene is exploding; the run stops after step " << scene->iter
+			    << (last ? "; further such errors are not shown" : "");
+			return msg.str();
+		});
+	}
+	return travelDt;
+}
+
+Real RbsmTimeStepper::stableDt() const { return safetyFactor * std::min(criticalDt, firstContactDt) / std::sqrt(1 + newtonDamping); }
+
 void RbsmTimeStepper::action()
 {
-	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: check now)
-	if (lastCheck >= 0 && scene->iter >= lastCheck && scene->iter - lastCheck < interval) return;
-	lastCheck        = scene->iter;
-	const Real dtMax = safetyFactor * estimate();
-	if (!std::isfinite(dtMax)) return; // no joint yet: nothing limits the step
-	if (setDt) {
-		// The estimate is only as good as the joints of this step: a block meeting another by a
-		// corner has a short, soft joint that stiffens as it closes before the next check. So the
-		// step set here never grows again once set; it only shrinks when stiffer joints appear.
-		scene->dt = dtWasSet ? std::min(scene->dt, dtMax) : dtMax;
-		dtWasSet  = true;
-		return;
-	}
-	// The estimate moves with the geometry by round-off from one step to the next: a step set to
-	// safetyFactor x estimate() must not be refused for that (the safety factor is the margin).
-	if (!(scene->dt <= dtMax * (1 + 1e-6))) {
-		std::ostringstream msg;
-		msg << "RbsmTimeStepper: O.dt = " << scene->dt << " s exceeds the stable limit of the RBSM system at step " << scene->iter << " ("
-		    << safetyFactor << " x critical step " << criticalDt << " s = " << dtMax
-		    << " s); the step was refused before integration. Reduce O.dt or set RbsmTimeStepper.setDt=True.";
+	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: estimate now)
+	const long made = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
+	if (lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval) fullCheck();
+	else if (made != jointsSeen) addJointsMadeThisStep();
+	jointsSeen          = made;
+	const Real travelDt = checkMotion();
+
+	const Real limit = stableDt();
+	std::ostringstream msg;
+	msg << "RbsmTimeStepper: ";
+	if (std::isnan(limit) || limit <= 0) {
+		msg << "the stable time step is " << limit << " s at step " << scene->iter << " (joints of body #" << criticalBody
+		    << "): a joint is infinitely stiff or damped (Poisson's ratio at 0.5 in plane strain? dampingRatio?); the step was refused.";
 		throw std::runtime_error(msg.str());
 	}
+	if (setDt) {
+		// The travel limit never takes the step below a tenth of the stable one: a block exploding
+		// (thrown at km/s) is reported by checkMotion, not run in slow motion.
+		const Real dt = std::min({ limit, maxDt, std::max(travelDt, limit / 10) });
+		if (std::isfinite(dt)) scene->dt = dt;
+		return;
+	}
+	if (!(scene->dt > 0)) {
+		msg << "O.dt = " << scene->dt << " s at step " << scene->iter << ": time would not advance; the step was refused. Set O.dt > 0 or RbsmTimeStepper.setDt=True.";
+		throw std::runtime_error(msg.str());
+	}
+	// The estimate moves with the geometry by round-off from one step to the next: a step set to
+	// the stable step must not be refused for that (the safety factor is the margin).
+	if (scene->dt <= limit * (1 + 1e-6)) return;
+	msg << "O.dt = " << scene->dt << " s exceeds the stable limit of the RBSM system at step " << scene->iter << " (" << safetyFactor
+	    << " x critical step " << std::min(criticalDt, firstContactDt) << " s";
+	if (newtonDamping > 0) msg << " / sqrt(1 + NewtonIntegrator.damping " << newtonDamping << ")";
+	msg << " = " << limit << " s; "
+	    << (criticalDt <= firstContactDt ? "the joints of body #" + std::to_string(criticalBody) : std::string("the first contact a block can form"))
+	    << "); the step was refused before integration. Reduce O.dt or set RbsmTimeStepper.setDt=True.";
+	throw std::runtime_error(msg.str());
 }
 
 } // namespace yade

@@ -5,47 +5,72 @@
 
 namespace yade {
 
+class Interaction;
+
 class RbsmTimeStepper : public GlobalEngine {
 public:
 	void action() override;
 	//! Checks the attributes when they are set (raises ValueError in Python, before any step).
-	void postLoad(RbsmTimeStepper&)
-	{
-		if (!(safetyFactor > 0 && safetyFactor <= 1))
-			throw std::invalid_argument("RbsmTimeStepper.safetyFactor: must be in (0, 1] (got " + std::to_string(safetyFactor) + ")");
-		if (interval < 1) throw std::invalid_argument("RbsmTimeStepper.interval: must be >= 1 (got " + std::to_string(interval) + ")");
-	}
-	//! Critical time step of the current system [s] (+inf if no RBSM joint exists yet).
+	void postLoad(RbsmTimeStepper&);
+	//! Critical time step of the present joints [s] (+inf if no RBSM joint exists yet).
 	Real estimate();
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RbsmTimeStepper, GlobalEngine,
-		"Guards the explicit (central-difference) integration of RBSM blocks against instability. The critical step is "
-		"dt_crit = 2/ω_max, ω_max² the largest eigenvalue of M⁻¹K for the blocks (mass, polar inertia) and the joint springs "
-		"(kn, ks per unit area at every integration point, times its tributary area). ω_max² is bounded from above by the "
-		"block Gershgorin theorem (Feingold & Varga 1962) on M^-½ K M^-½, so the undamped estimate is never above the true "
-		"limit. With joint dashpots (Law2's dampingRatio) it is multiplied by √(1+ξ²) − ξ, ξ the largest damping ratio of a "
-		"joint's own normal or shear mode (an estimate, not a bound).\n\n"
+		"Keeps the explicit (central-difference) integration of RBSM blocks stable at every step. The stable step is the "
+		"smaller of two limits, times safetyFactor and divided by √(1 + NewtonIntegrator.damping) (Cundall's damping "
+		"raises a decelerating force by that factor):\n\n"
+		"* the joints (:yref:`criticalDt<RbsmTimeStepper.criticalDt>`): dt_crit = 2/ω_max, ω_max² the largest eigenvalue "
+		"of M⁻¹K for the blocks (mass, polar inertia) and the joint springs (kn, ks per unit area at every integration point, "
+		"times its tributary area), bounded from above by the block Gershgorin theorem (Feingold & Varga 1962) on "
+		"M^-½ K M^-½. A joint whose incident block touches by a corner that is closing by rotation counts with the length "
+		"it reaches once flat (the shorter of its two edges), not its present one. With joint dashpots (Law2's "
+		"dampingRatio) the limit is multiplied by √(1+ξ²) − ξ, ξ the damping ratio of each block's fastest mode. A full "
+		"estimate runs every :yref:`interval<RbsmTimeStepper.interval>` steps; a joint made in between raises the bounds of "
+		"its two blocks at the step it is made (the Gershgorin terms add up), before anything moves;\n"
+		"* the first contacts (:yref:`firstContactDt<RbsmTimeStepper.firstContactDt>`): the stiffest single joint each free "
+		"block can form (one of its edges in full contact, Kawai springs with the thinnest, stiffest partner in the scene), "
+		"so that blocks that have not met yet run at a step their first contact survives.\n\n"
+		"With :yref:`setDt<RbsmTimeStepper.setDt>` O.dt is set to that step at every step (at most "
+		":yref:`maxDt<RbsmTimeStepper.maxDt>`); otherwise a larger O.dt (or O.dt ≤ 0) is refused with an error before "
+		"anything moves. A block that moves or turns by more than :yref:`maxStepMotion<RbsmTimeStepper.maxStepMotion>` of "
+		"its inner radius in one step (tunnelling, or an explosion) is reported by id and the run stops after that step; "
+		"with setDt the step is also kept short enough for every block to move by at most half that (never below a tenth of "
+		"the stable step, so that an explosion is reported, not run in slow motion).\n\n"
 		"Place it after :yref:`InteractionLoop` and before :yref:`NewtonIntegrator`, so that the joints of this step are "
-		"known before the integration. Every :yref:`interval<RbsmTimeStepper.interval>` steps: if "
-		":yref:`setDt<RbsmTimeStepper.setDt>`, O.dt becomes safetyFactor·dt_crit; otherwise a step with "
-		"O.dt > safetyFactor·dt_crit is refused with an error before anything moves.",
-		((Real, safetyFactor, 0.8, Attr::triggerPostLoad, "Fraction of the critical step allowed (0 < safetyFactor ≤ 1)."))
-		((bool, setDt, false, , "Set O.dt to safetyFactor·dt_crit (True) or only check it and refuse an unstable O.dt (False)."))
-		((int, interval, 100, Attr::triggerPostLoad, "Check every this many steps (the first step is always checked). One estimate costs about one InteractionLoop pass of the exact geometry (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
-		((bool, dtWasSet, false, , "Whether this engine has set O.dt already; from then on it only lowers O.dt (a corner contact found at a check may stiffen before the next one)."))
-		((long, lastCheck, -1, Attr::readonly, "Step of the last check (saved with the scene, so that a loaded scene is checked on the same steps as an uninterrupted run)."))
-		((Real, criticalDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step found at the last check [s].")),
+		"known before the integration.",
+		((Real, safetyFactor, 0.8, Attr::triggerPostLoad, "Fraction of the stable step allowed (0 < safetyFactor ≤ 1)."))
+		((bool, setDt, false, , "Set O.dt to the stable step (True) or only check it and refuse a larger O.dt (False)."))
+		((int, interval, 100, Attr::triggerPostLoad, "Full estimate every this many steps (the first step always has one); joints made in between are added at once. One full estimate costs about one InteractionLoop pass of the exact geometry (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
+		((Real, maxDt, std::numeric_limits<Real>::infinity(), Attr::triggerPostLoad, "Largest step that setDt sets [s] (> 0): a user's cap below the stable step."))
+		((Real, maxStepMotion, 0.5, Attr::triggerPostLoad, "Largest motion of a block in one step, (|v| + |ω| R)·dt, as a fraction of its inner radius (the distance from its centroid to its nearest edge line) before it is reported and the run stopped; 0 switches the check off."))
+		((long, lastCheck, -1, Attr::readonly, "Step of the last full estimate (saved with the scene, so that a loaded scene is checked on the same steps as an uninterrupted run)."))
+		((Real, criticalDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step of the joints [s], from the last full estimate and the joints made since (inf: no joint)."))
+		((Real, firstContactDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step of the stiffest single joint the free blocks can form [s] (inf: no two blocks can meet)."))
+		((Real, newtonDamping, 0, Attr::readonly, "NewtonIntegrator's damping as read at the last full estimate."))
+		((int, criticalBody, -1, Attr::readonly, "Id of the block whose joints limit criticalDt (-1: none)."))
+		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bound ω² of its rows, the dashpot Σ c·A and the softer spring Σ k·A of its joints since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run).")),
 		/*ctor*/,
-		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the current system [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
+		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the present joints [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
+		.add_property("stableDt", &RbsmTimeStepper::stableDt, "The step this engine allows now [s]: safetyFactor × min(criticalDt, firstContactDt) / √(1 + newtonDamping).")
 	);
 	// clang-format on
+	Real stableDt() const;
+
 private:
+	void fullCheck();
+	void addJointsMadeThisStep();
+	Real checkMotion();
+	Real firstContactEstimate() const;
+	bool jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
+	Real blockDt(size_t id) const; // damped step of body id's rows (rowBounds)
+	void boundsHold(size_t nBodies);
 	// estimate()'s working arrays, kept between calls so that a check allocates nothing once the
 	// scene has grown (not saved; the engine runs on one thread)
 	std::vector<rbsm::DynBody>    dynBodies;
-	std::vector<int>              dynIndex;
+	std::vector<int>              dynIndex, dynIds;
 	std::vector<rbsm::DynContact> dynContacts;
-	std::vector<Real>             dashpot, spring;
+	std::vector<Real>             inradius; // per body id, from the last full estimate
+	long                          jointsSeen = -1;
 };
 REGISTER_SERIALIZABLE(RbsmTimeStepper);
 

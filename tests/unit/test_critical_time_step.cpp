@@ -117,3 +117,66 @@ TEST(CriticalTimeStep, NoStiffnessAndBadInput)
 	b[0].mass = 1;
 	EXPECT_THROW(criticalTimeStepGershgorin(b, { contact(0, 0, Vec2(1, 0), 1, 1, {}, {}) }), std::invalid_argument);
 }
+
+// A contact made after an estimate: adding its row terms to the estimate's bounds bounds the
+// estimate of the whole system (the Gershgorin terms are subadditive), random two-block contacts.
+TEST(CriticalTimeStep, RowBoundsOfANewContactAddUp)
+{
+	std::mt19937                     rng(3);
+	std::uniform_real_distribution<> u(0.1, 2.0), a(-1, 1);
+	for (int trial = 0; trial < 200; ++trial) {
+		std::vector<DynBody> b(3);
+		for (auto& x : b) x.mass = u(rng), x.inertia = u(rng), x.centroid = Vec2(a(rng), a(rng));
+		b[0].fixed = trial % 3 == 0;
+		auto randomContact = [&](int i, int j) {
+			const Vec2 n = Vec2(a(rng), a(rng)).normalized();
+			return contact(i, j, n, 1e6 * u(rng), 1e6 * u(rng), { Vec2(a(rng), a(rng)), Vec2(a(rng), a(rng)) }, { u(rng), u(rng) });
+		};
+		const std::vector<DynContact> before = { randomContact(0, 1) };
+		const DynContact              added  = randomContact(1, 2);
+		std::vector<Real>             rows;
+		criticalTimeStepGershgorin(b, before, &rows);
+		Real add1, add2;
+		contactRowBounds(b, added, add1, add2);
+		rows[1] += add1, rows[2] += add2;
+		const Real bound = 2 / std::sqrt(*std::max_element(rows.begin(), rows.end()));
+		std::vector<DynContact> all = before;
+		all.push_back(added);
+		EXPECT_LE(bound, criticalTimeStepGershgorin(b, all) * (1 + 1e-12));
+		EXPECT_LE(bound, criticalTimeStepExact(b, all) * (1 + 1e-12));
+	}
+}
+
+// The stiffest single joint of a block bounds every joint it can form along one of its edges, and
+// for a unit square on a fixed base it is that joint exactly.
+TEST(CriticalTimeStep, StiffestJointOfABlock)
+{
+	const std::vector<Vec2> square = { Vec2(-0.5, -0.5), Vec2(0.5, -0.5), Vec2(0.5, 0.5), Vec2(-0.5, 0.5) };
+	DynBody                 body { 2000, 2000.0 / 6, Vec2::Zero(), false };
+	const Real              En = 1e8, Es = 8e7, t = 1;
+	const Real              w2 = stiffestJointOmega2(body, square, En, Es, 0, 0, t);
+	// the bottom edge on a rigid base: kn = En/h, ks = Es/h, h = 0.5, two Gauss points
+	std::vector<DynBody> two = { DynBody { 0, 0, Vec2::Zero(), true }, body };
+	const Real           g   = 0.5 / std::sqrt(3.0);
+	const DynContact     c   = contact(0, 1, Vec2(0, 1), En / 0.5, Es / 0.5, { Vec2(-g, -0.5), Vec2(g, -0.5) }, { 0.5, 0.5 });
+	EXPECT_NEAR(2 / std::sqrt(w2), criticalTimeStepExact(two, { c }), 1e-9);
+	// a partner's compliance only softens it
+	EXPECT_LT(stiffestJointOmega2(body, square, En, Es, 0.1 / En, 0.1 / Es, t), w2);
+	EXPECT_NEAR(centroidInradius(square), 0.5, 1e-15);
+}
+
+// A corner closing by rotation counts with the shorter edge's length; a flat joint keeps its own.
+TEST(CriticalTimeStep, ClosingContact)
+{
+	const Vec2 r0u(5, 0), r1u(-5, 0); // the top edge of a block below (CCW: outward normal +y)
+	// a unit edge tilted by 45 degrees, its corner 1 cm in: grows to length 1
+	const Vec2 corner(0, -0.01), far = corner + Vec2(std::sqrt(0.5), std::sqrt(0.5));
+	const auto tilted = closingContact(r0u, r1u, corner, far, Vec2(0.01, 0), Vec2(0, 0));
+	EXPECT_NEAR((tilted.second - tilted.first).norm(), 1.0, 1e-12);
+	// running bond: a flat 2 m edge overlapping the reference by 1 m keeps its 1 m
+	const auto flat = closingContact(r0u, r1u, Vec2(6, -1e-3), Vec2(4, -1e-3), Vec2(5, 0), Vec2(4, 0));
+	EXPECT_NEAR((flat.second - flat.first).norm(), 1.0, 1e-12);
+	// diagonal neighbours: a corner on the reference edge's end, the edge (slightly turned) beyond it
+	const auto diagonal = closingContact(r0u, r1u, Vec2(-5, -1e-6), Vec2(-6, 1e-5), Vec2(-5, 0), Vec2(-5, 0));
+	EXPECT_NEAR((diagonal.second - diagonal.first).norm(), 0.0, 1e-12);
+}

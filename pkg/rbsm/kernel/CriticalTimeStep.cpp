@@ -13,16 +13,22 @@ namespace rbsm {
 namespace {
 	using Mat3 = Eigen::Matrix3d;
 
+	void checkContact(const std::vector<DynBody>& bodies, const DynContact& c)
+	{
+		if (c.body1 < 0 || c.body2 < 0 || c.body1 >= int(bodies.size()) || c.body2 >= int(bodies.size()) || c.body1 == c.body2)
+			throw std::invalid_argument("criticalTimeStep: bad body index in a contact");
+		if (c.points.size() != c.areas.size()) throw std::invalid_argument("criticalTimeStep: points and areas differ in size");
+		if (c.kn < 0 || c.ks < 0) throw std::invalid_argument("criticalTimeStep: negative stiffness");
+		for (int b : { c.body1, c.body2 })
+			if (!bodies[b].fixed && !(bodies[b].mass > 0 && bodies[b].inertia > 0))
+				throw std::invalid_argument("criticalTimeStep: free body needs mass > 0 and inertia > 0");
+	}
 	void check(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts)
 	{
 		for (const auto& b : bodies)
 			if (!b.fixed && !(b.mass > 0 && b.inertia > 0)) throw std::invalid_argument("criticalTimeStep: free body needs mass > 0 and inertia > 0");
-		for (const auto& c : contacts) {
-			if (c.body1 < 0 || c.body2 < 0 || c.body1 >= int(bodies.size()) || c.body2 >= int(bodies.size()) || c.body1 == c.body2)
-				throw std::invalid_argument("criticalTimeStep: bad body index in a contact");
-			if (c.points.size() != c.areas.size()) throw std::invalid_argument("criticalTimeStep: points and areas differ in size");
-			if (c.kn < 0 || c.ks < 0) throw std::invalid_argument("criticalTimeStep: negative stiffness");
-		}
+		for (const auto& c : contacts)
+			checkContact(bodies, c);
 	}
 
 	// The stiffness of one contact in 3x3 blocks (DOFs ux, uy, theta of body1, then of body2): a
@@ -49,7 +55,78 @@ namespace {
 		}
 		return K;
 	}
+	Real lambdaMax(const Mat3& S)
+	{
+		Eigen::SelfAdjointEigenSolver<Mat3> es;
+		es.computeDirect(S, Eigen::EigenvaluesOnly); // closed form (3x3): a fraction of the iterative solver's cost
+		return std::max(Real(0), es.eigenvalues().maxCoeff());
+	}
+	Eigen::Vector3d inverseSqrtMass(const DynBody& b) { return Eigen::Vector3d(1 / std::sqrt(b.mass), 1 / std::sqrt(b.mass), 1 / std::sqrt(b.inertia)); }
 } // namespace
+
+void contactRowBounds(const std::vector<DynBody>& bodies, const DynContact& c, Real& add1, Real& add2)
+{
+	checkContact(bodies, c);
+	const DynBody &b1 = bodies[c.body1], &b2 = bodies[c.body2];
+	const ContactBlocks K = contactStiffness(bodies, c);
+	add1 = b1.fixed ? 0 : lambdaMax(inverseSqrtMass(b1).asDiagonal() * K.K11 * inverseSqrtMass(b1).asDiagonal());
+	add2 = b2.fixed ? 0 : lambdaMax(inverseSqrtMass(b2).asDiagonal() * K.K22 * inverseSqrtMass(b2).asDiagonal());
+	if (!b1.fixed && !b2.fixed) {
+		const Mat3 S12  = inverseSqrtMass(b1).asDiagonal() * K.K12 * inverseSqrtMass(b2).asDiagonal();
+		const Real norm = std::sqrt(lambdaMax(S12.transpose() * S12));
+		add1 += norm, add2 += norm;
+	}
+}
+
+Real stiffestJointOmega2(const DynBody& body, const std::vector<Vec2>& v, Real En, Real Es, Real partnerN, Real partnerS, Real thickness)
+{
+	if (body.fixed || v.size() < 3) return 0;
+	const std::vector<DynBody> pair = { DynBody { 0, 0, Vec2::Zero(), true }, DynBody { body.mass, body.inertia, Vec2::Zero(), false } };
+	const Real                 g    = 0.5 / std::sqrt(3.0); // two Gauss points at 1/2 -+ g
+	Real                       best = 0;
+	for (size_t i = 0; i < v.size(); ++i) {
+		const Vec2 a = v[i], b = v[(i + 1) % v.size()], e = b - a;
+		const Real L = e.norm();
+		if (!(L > 0)) continue;
+		DynContact c;
+		c.body1 = 0, c.body2 = 1;
+		c.normal  = Vec2(e.y(), -e.x()) / L; // outward
+		c.tangent = Vec2(-c.normal.y(), c.normal.x());
+		const Real h = std::abs(c.normal.dot(a));
+		c.kn = 1 / (h / En + partnerN), c.ks = 1 / (h / Es + partnerS);
+		c.points = { a + (0.5 - g) * e, a + (0.5 + g) * e };
+		c.areas  = { 0.5 * L * thickness, 0.5 * L * thickness };
+		Real add1, add2;
+		contactRowBounds(pair, c, add1, add2);
+		best = std::max(best, add2);
+	}
+	return best;
+}
+
+Real centroidInradius(const std::vector<Vec2>& v)
+{
+	Real r = std::numeric_limits<Real>::infinity();
+	for (size_t i = 0; i < v.size(); ++i) {
+		const Vec2 e = v[(i + 1) % v.size()] - v[i];
+		if (e.norm() > 0) r = std::min(r, std::abs(cross2(e, v[i])) / e.norm());
+	}
+	return v.size() < 3 ? 0 : r;
+}
+
+std::pair<Vec2, Vec2> closingContact(const Vec2& ref0, const Vec2& ref1, const Vec2& inc0, const Vec2& inc1, const Vec2& p0, const Vec2& p1)
+{
+	const Real refLen = (ref1 - ref0).norm(), incLen = (inc1 - inc0).norm();
+	if (!(refLen > 0 && incLen > 0)) return { p0, p1 };
+	const Vec2 t = (ref1 - ref0) / refLen, n(t.y(), -t.x()); // along the reference edge; its outward normal
+	// the incident edge laid flat about its deeper end, along the side its other end projects to
+	const bool deep0 = n.dot(inc0 - ref0) <= n.dot(inc1 - ref0);
+	const Vec2 &deep = deep0 ? inc0 : inc1, &other = deep0 ? inc1 : inc0;
+	const Real at = t.dot(deep - ref0), reach = t.dot(other - deep) >= 0 ? incLen : -incLen;
+	const Real s0 = std::clamp(std::min(at, at + reach), Real(0), refLen), s1 = std::clamp(std::max(at, at + reach), Real(0), refLen);
+	if (s1 - s0 <= (p1 - p0).norm()) return { p0, p1 };
+	const Vec2 a = ref0 + s0 * t, b = ref0 + s1 * t;
+	return t.dot(p1 - p0) >= 0 ? std::make_pair(a, b) : std::make_pair(b, a); // the segment's own orientation
+}
 
 Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts, std::vector<Real>* perBody)
 {
@@ -79,25 +156,16 @@ Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::v
 		if (k > 0 && key == pairKey(order[k - 1])) off.back().second += offOfContact[order[k]];
 		else off.push_back({ { int(key >> 32), int(key & 0xffffffffu) }, offOfContact[order[k]] });
 	}
-	// Scale to S = M^-1/2 K M^-1/2 block by block.
-	auto isq = [&](size_t b) { return Eigen::Vector3d(1 / std::sqrt(bodies[b].mass), 1 / std::sqrt(bodies[b].mass), 1 / std::sqrt(bodies[b].inertia)); };
-	// Block Gershgorin bound for the rows of each free body b:
+	// Scale to S = M^-1/2 K M^-1/2 block by block. Block Gershgorin bound for the rows of each free body b:
 	//   lambda_max <= max_b [ lambda_max(S_bb) + sum_{c != b, free} ||S_bc||_2 ].
 	std::vector<Real> bound(n, 0);
-	for (size_t b = 0; b < n; ++b) {
-		if (bodies[b].fixed) continue;
-		const Mat3                                     Sbb = isq(b).asDiagonal() * diag[b] * isq(b).asDiagonal();
-		Eigen::SelfAdjointEigenSolver<Mat3>            es;
-		es.computeDirect(Sbb, Eigen::EigenvaluesOnly); // closed form (3x3): a fraction of the iterative solver's cost
-		bound[b] = std::max(Real(0), es.eigenvalues().maxCoeff());
-	}
+	for (size_t b = 0; b < n; ++b)
+		if (!bodies[b].fixed) bound[b] = lambdaMax(inverseSqrtMass(bodies[b]).asDiagonal() * diag[b] * inverseSqrtMass(bodies[b]).asDiagonal());
 	for (const auto& kv : off) {
 		const int a = kv.first.first, b = kv.first.second;
 		if (bodies[a].fixed || bodies[b].fixed) continue; // fixed DOFs are removed from the system
-		const Mat3                                     Sab = isq(a).asDiagonal() * kv.second * isq(b).asDiagonal();
-		Eigen::SelfAdjointEigenSolver<Mat3>            es;
-		es.computeDirect(Sab.transpose() * Sab, Eigen::EigenvaluesOnly);
-		const Real                                     norm2 = std::sqrt(std::max(Real(0), es.eigenvalues().maxCoeff()));
+		const Mat3 Sab   = inverseSqrtMass(bodies[a]).asDiagonal() * kv.second * inverseSqrtMass(bodies[b]).asDiagonal();
+		const Real norm2 = std::sqrt(lambdaMax(Sab.transpose() * Sab));
 		bound[a] += norm2; // ||S_ab|| = ||S_ba||
 		bound[b] += norm2;
 	}

@@ -12,6 +12,7 @@
 
 #include <pkg/rbsm/kernel/Types.hpp>
 
+#include <utility>
 #include <vector>
 
 namespace rbsm {
@@ -46,6 +47,39 @@ struct DynContact {
 /// perBody (optional): the bound of each body's rows, lambda_max(S_bb) + sum ||S_bc|| [rad^2/s^2]
 /// (0 for fixed bodies): every eigenvalue lies below one of them (the highest is the result's).
 Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts, std::vector<Real>* perBody = nullptr);
+
+/// How much one contact raises the block Gershgorin bound of its two bodies' rows (the perBody
+/// values above): lambda_max(S_bb) + ||S_12|| for each side (0 for a fixed body; the coupling term
+/// only between two free bodies). Both terms are subadditive over contacts, so adding these to the
+/// bounds of an earlier estimate bounds the estimate with the contact included: a contact made
+/// between two estimates is accounted for at once, without a new estimate.
+void contactRowBounds(const std::vector<DynBody>& bodies, const DynContact& contact, Real& add1, Real& add2);
+
+/// omega^2 of the stiffest single joint a block can form: one of its edges in full contact with a
+/// fixed partner (two Gauss points: the exact integral, an upper bound for every rule), the springs
+/// of that edge kn = 1/(h/En + partnerN), ks = 1/(h/Es + partnerS) with h the distance from the
+/// centroid to the edge line (Kawai's h of this side) and partnerN, partnerS the least compliance
+/// the other side can add (its h over its moduli). vertices: CCW about the centroid, any rotation
+/// (the bound does not depend on it). thickness: out-of-plane [m]. Two free blocks meeting have
+/// omega^2 <= the sum of their values (lambda_max of a PSD block matrix <= the sum of its diagonal
+/// blocks'), a block meeting a fixed one its own.
+Real stiffestJointOmega2(const DynBody& body, const std::vector<Vec2>& vertices, Real En, Real Es, Real partnerN, Real partnerS, Real thickness);
+
+/// Distance from the centroid (the origin) to the nearest edge line of a convex CCW polygon given
+/// about its centroid [m]: the least distance from the centroid to any supporting line, hence the
+/// least Kawai h a joint of this block can have.
+Real centroidInradius(const std::vector<Vec2>& vertices);
+
+/// The contact segment a joint can reach within a few steps (world, m). A corner of the incident
+/// block on the reference edge closes by rotation until the incident edge lies flat: a joint
+/// estimated at its present, short length would soon be many times stiffer. The incident edge is
+/// laid flat on the reference line about its deeper end, towards the side its other end lies on,
+/// and clipped to the reference edge; that segment is returned where it is longer than p0-p1. A flat
+/// joint keeps its segment (bricks in running bond: the laid edge covers what it covers now), and so
+/// does a corner that only meets a corner (diagonal neighbours in a grid: the laid edge points away
+/// from the reference edge). ref0-ref1: the reference edge, CCW on its block; inc0-inc1: the
+/// incident edge.
+std::pair<Vec2, Vec2> closingContact(const Vec2& ref0, const Vec2& ref1, const Vec2& inc0, const Vec2& inc1, const Vec2& p0, const Vec2& p1);
 
 /// Exact dt_crit = 2 / sqrt(lambda_max(M^-1 K)) from a dense symmetric eigen-solve; O(N^3) in the
 /// number of free bodies, meant for tests and small systems (e.g. the two-block closed form).
