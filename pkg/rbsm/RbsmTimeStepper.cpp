@@ -220,8 +220,8 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 	}
 }
 
-// The stiffest single joint each free block can form: one of its edges in full contact with the
-// partner that adds the least compliance (the smallest inner radius over modulus of any other block).
+// The stiffest single joint each free block without joints can form: one of its edges in full contact
+// with the partner that adds the least compliance (the smallest inner radius over modulus of any other block).
 Real RbsmTimeStepper::firstContactEstimate() const
 {
 	struct Candidate {
@@ -260,7 +260,9 @@ Real RbsmTimeStepper::firstContactEstimate() const
 	Real top[2] = { 0, 0 }; // the two largest ω² of free blocks
 	for (const Block& k : blocks) {
 		const State& s = *scene->bodies->body[size_t(k.id)]->state;
-		if (isFixed(s)) continue;
+		// a block with joints is bounded by them (a bonded sliver is not assumed to meet another
+		// sliver); a joint it makes later is added at the step it is made
+		if (isFixed(s) || (size_t(kRow * k.id) < rowBounds.size() && rowBounds[kRow * k.id] > 0)) continue;
 		const Real partnerN = bestN[0].id != k.id ? bestN[0].value : bestN[1].value;
 		const Real partnerS = bestS[0].id != k.id ? bestS[0].value : bestS[1].value;
 		if (!std::isfinite(partnerN) || !std::isfinite(partnerS)) continue; // nothing to meet
@@ -317,6 +319,12 @@ Real RbsmTimeStepper::checkMotion()
 }
 
 Real RbsmTimeStepper::stableDt() const { return safetyFactor * std::min(criticalDt, firstContactDt) / std::sqrt(1 + newtonDamping); }
+
+Real RbsmTimeStepper::limit()
+{
+	fullCheck();
+	return stableDt();
+}
 
 void RbsmTimeStepper::action()
 {

@@ -28,8 +28,8 @@ public:
 		"estimate runs every :yref:`interval<RbsmTimeStepper.interval>` steps; a joint made in between raises the bounds of "
 		"its two blocks at the step it is made (the Gershgorin terms add up), before anything moves;\n"
 		"* the first contacts (:yref:`firstContactDt<RbsmTimeStepper.firstContactDt>`): the stiffest single joint each free "
-		"block can form (one of its edges in full contact, Kawai springs with the thinnest, stiffest partner in the scene), "
-		"so that blocks that have not met yet run at a step their first contact survives.\n\n"
+		"block that has no joint yet can form (one of its edges in full contact, Kawai springs with the thinnest, stiffest partner in the scene), "
+		"so that blocks that have not met yet run at a step their first contact survives (a block with joints is bounded by them, and a joint it makes later is added at the step it is made).\n\n"
 		"With :yref:`setDt<RbsmTimeStepper.setDt>` O.dt is set to that step at every step (at most "
 		":yref:`maxDt<RbsmTimeStepper.maxDt>`); otherwise a larger O.dt (or O.dt ≤ 0) is refused with an error before "
 		"anything moves. A block that moves or turns by more than :yref:`maxStepMotion<RbsmTimeStepper.maxStepMotion>` of "
@@ -45,16 +45,18 @@ public:
 		((Real, maxStepMotion, 0.5, Attr::triggerPostLoad, "Largest motion of a block in one step, (|v| + |ω| R)·dt, as a fraction of its inner radius (the distance from its centroid to its nearest edge line) before it is reported and the run stopped; 0 switches the check off."))
 		((long, lastCheck, -1, Attr::readonly, "Step of the last full estimate (saved with the scene, so that a loaded scene is checked on the same steps as an uninterrupted run)."))
 		((Real, criticalDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step of the joints [s], from the last full estimate and the joints made since (inf: no joint)."))
-		((Real, firstContactDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step of the stiffest single joint the free blocks can form [s] (inf: no two blocks can meet)."))
+		((Real, firstContactDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step of the stiffest single joint the free blocks without joints can form [s] (inf: no such block, or nothing it can meet)."))
 		((Real, newtonDamping, 0, Attr::readonly, "NewtonIntegrator's damping as read at the last full estimate."))
 		((int, criticalBody, -1, Attr::readonly, "Id of the block whose joints limit criticalDt (-1: none)."))
 		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bound ω² of its rows, the dashpot Σ c·A and the softer spring Σ k·A of its joints since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run).")),
 		/*ctor*/,
 		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the present joints [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
+		.def("limit", &RbsmTimeStepper::limit, "Runs a full estimate of the scene as it is now (joints, first contacts, NewtonIntegrator.damping) and returns :yref:`stableDt<RbsmTimeStepper.stableDt>` [s], the step this engine would allow; what yade_rbsm.critical_time_step() returns at safetyFactor=1.")
 		.add_property("stableDt", &RbsmTimeStepper::stableDt, "The step this engine allows now [s]: safetyFactor × min(criticalDt, firstContactDt) / √(1 + newtonDamping).")
 	);
 	// clang-format on
 	Real stableDt() const;
+	Real limit();
 
 private:
 	void fullCheck();
