@@ -1,8 +1,12 @@
+#include <pkg/rbsm/BlockStateCheck.hpp>
 #include <pkg/rbsm/RbsmGeom.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
 #include <pkg/rbsm/RbsmTimeStepper.hpp>
+#include <pkg/rbsm/ReshapedBlocks.hpp>
+#include <pkg/rbsm/StepReport.hpp>
 #include <core/Scene.hpp>
 
+#include <atomic>
 #include <sstream>
 
 namespace yade {
@@ -83,8 +87,29 @@ Real RbsmTimeStepper::estimate()
 	return criticalDt;
 }
 
+namespace {
+	std::atomic<int> blockStateReports { 0 };
+}
+
 void RbsmTimeStepper::action()
 {
+	// Per-body pass (issue 15), every step, on this thread: a reshaped block gets the mass of its new
+	// shape (ReshapedBlocks.hpp); a block whose state the model cannot integrate is reported by id
+	// and the run stops after this step (BlockStateCheck.hpp), without the estimate below, which
+	// would throw without naming the body.
+	{
+		bool reshaped = false, bad = false;
+		for (const auto& b : scene->bodies->body) {
+			if (!b) continue;
+			reshaped |= followReshape(*b, *scene->bodies);
+			const std::string problem = blockStateProblem(*b);
+			if (problem.empty()) continue;
+			rbsm_report::stopForBody(blockStateReports, *scene, "RbsmTimeStepper", b->id, problem);
+			bad = true;
+		}
+		if (bad) return;
+		if (reshaped) lastCheck = -1; // a lighter block may need a shorter step now
+	}
 	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: check now)
 	if (lastCheck >= 0 && scene->iter >= lastCheck && scene->iter - lastCheck < interval) return;
 	lastCheck        = scene->iter;
