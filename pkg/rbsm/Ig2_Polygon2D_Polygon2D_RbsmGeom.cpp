@@ -115,11 +115,15 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	const Real     relCos = cos1 * cos2 + sin1 * sin2, relSin = cos1 * sin2 - sin1 * cos2;  // θ2 − θ1
 	const rbsm::RelativePose relPose { rel, relCos, relSin };
 	// A block reshaped since this joint was made (Polygon2D.revision): the joint's edge numbers and
-	// search memory belong to the old shape. It is made anew from the new shape, as a new contact
-	// (Ip2 makes its phys again: a bonded joint becomes frictional); RbsmTimeStepper scales the mass.
+	// search memory belong to the old shape. It is searched afresh on the new shape and gets new
+	// springs (Ip2 makes its phys again: a bonded joint becomes frictional); a joint that no longer
+	// touches is handed to the law as lost. RbsmTimeStepper scales the mass.
 	if (I->geom && !force) {
-		const auto* old = static_cast<const RbsmGeom*>(I->geom.get());
-		if (old->shapeRevision1 != A.revision || old->shapeRevision2 != B.revision) I->geom.reset(), I->phys.reset();
+		auto* old = static_cast<RbsmGeom*>(I->geom.get());
+		if (old->shapeRevision1 != A.revision || old->shapeRevision2 != B.revision) {
+			old->forgetShapes(A.revision, B.revision);
+			I->phys.reset();
+		}
 	}
 	const bool               existing = I->geom && !force;
 	RbsmGeom*                g        = existing ? static_cast<RbsmGeom*>(I->geom.get()) : nullptr;

@@ -97,6 +97,18 @@ public:
 	/// Polygon2D.revision of the two blocks when the joint was made (not saved: 0 after a load, like
 	/// the shapes'); Ig2 makes the joint anew when a block has been reshaped since.
 	long shapeRevision1 = 0, shapeRevision2 = 0;
+	/// Drops what the joint remembers of the blocks' old shapes (edge numbers, search memory, frozen
+	/// contact) and records the new revisions.
+	void forgetShapes(long revision1, long revision2)
+	{
+		searchMemory   = rbsm::SearchMemory();
+		frozen.valid   = false;
+		refBody        = 0;
+		refEdge        = -1;
+		frozenSteps    = 0;
+		shapeRevision1 = revision1;
+		shapeRevision2 = revision2;
+	}
 	/// m1·m2/(m1+m2), a fixed block (or one without a positive mass) counting as infinite mass.
 	static Real reducedMassOf(const State& a, const State& b)
 	{
