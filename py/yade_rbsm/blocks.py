@@ -79,9 +79,13 @@ def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=F
         raise ValueError("polygon2d: vertices contain NaN or inf")
     try:
         if _signed_area(pts) == 0:
-            # a bow-tie has zero area too: let Polygon2D name the problem (self-intersecting, collinear ...)
+            # a bow-tie has zero area too: Polygon2D calls it self-intersecting, which says more
             ox, oy = pts[0]
-            wrapper.Polygon2D(vertices=[(x - ox, y - oy) for x, y in pts])
+            try:
+                wrapper.Polygon2D(vertices=[(x - ox, y - oy) for x, y in pts])
+            except ValueError as e:
+                if "self-intersecting" in str(e):
+                    raise
         area, (cx, cy), j = polygon_properties(pts)
         # Polygon2D checks convexity, orientation and degeneracy and names the problem (ValueError).
         shape = wrapper.Polygon2D(vertices=[(x - cx, y - cy) for x, y in pts], thickness=thickness, wire=wire)

@@ -11,11 +11,11 @@ import pytest
 from conftest import run_scene
 
 
-def case(name, tmp_path=None, **kw):
+def case(name, tmp_path=None, timeout=300, **kw):
     params = dict(case=name, **kw)
     if tmp_path is not None:
         params["tmp"] = str(tmp_path)
-    return run_scene("validation_paths", params, output=True, timeout=300)
+    return run_scene("validation_paths", params, output=True, timeout=timeout)
 
 
 def test_update_attrs_refused_and_old_value_kept():
@@ -94,7 +94,7 @@ def test_messages_say_what_is_wrong():
 
 
 def test_python_functions_check_their_numeric_arguments():
-    r, _ = case("python_args")  # strength_reduction(check=0) never returned
+    r, _ = case("python_args", timeout=120)  # strength_reduction(check=0) never returned
     for call, exc in r["calls"].items():
         name = call.split()[1].split("=")[0]
         assert exc and exc[0] == "ValueError" and name in exc[1], (call, exc)

@@ -120,7 +120,7 @@ elif case == "reshape_in_contact":
     out["mass_expected"] = m.density * b.shape.area * b.shape.thickness
     out["inertia"] = b.state.inertia[2]
     out["inertia_expected"] = m.density * b.shape.polarMoment * b.shape.thickness
-    out["revision"] = b.shape.revision
+    out["revision"] = getattr(b.shape, "revision", None)  # (the old code had none)
     out["contacts"] = [[i.id1, i.id2, i.geom.refBody, i.geom.refEdge] for i in O.interactions if i.isReal]
     out["rest_height"] = b.state.pos[1]
 elif case == "periodic_thick":
