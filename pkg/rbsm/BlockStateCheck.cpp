@@ -20,7 +20,7 @@ namespace {
 
 std::string blockStateProblem(const Body& b)
 {
-	if (!b.shape || !b.state || b.shape->getClassIndex() != Polygon2D::getClassIndexStatic()) return "";
+	if (!b.shape || !b.state || b.shape->getClassIndex() != Polygon2D::getClassIndexStatic()) return {};
 	const State& s = *b.state;
 	// Only free degrees of freedom divide by the mass or inertia (a fixed base may have none).
 	const bool moves = (s.blockedDOFs & (State::DOF_X | State::DOF_Y)) != (State::DOF_X | State::DOF_Y);
@@ -31,7 +31,8 @@ std::string blockStateProblem(const Body& b)
 	const Quaternionr& q = s.ori;
 	if (!(std::isfinite(q.w()) && std::isfinite(q.x()) && std::isfinite(q.y()) && std::isfinite(q.z()))) return "has a state.ori that is not finite";
 	// A rotation about z only is (cos θ/2, 0, 0, sin θ/2); the contact geometry reads θ alone.
-	if (std::abs(q.x()) + std::abs(q.y()) > 1e-9 * q.norm()) {
+	const Real tilt = std::abs(q.x()) + std::abs(q.y());
+	if (tilt * tilt > 1e-18 * q.squaredNorm()) { // |x| + |y| > 1e-9 |q|, without a square root
 		std::ostringstream msg;
 		msg << "is rotated out of the x-y plane (state.ori has x, y components " << q.x() << ", " << q.y()
 		    << "; a Polygon2D block rotates about z only: keep 'XY' in state.blockedDOFs)";
@@ -39,7 +40,7 @@ std::string blockStateProblem(const Body& b)
 	}
 	if (!finite(s.pos)) return "has a state.pos that is not finite";
 	if (!finite(s.vel) || !finite(s.angVel)) return "has a state.vel or state.angVel that is not finite";
-	return "";
+	return {};
 }
 
 } // namespace yade
