@@ -1,11 +1,19 @@
 #include <pkg/rbsm/Bo1_Polygon2D_Aabb.hpp>
 
+#include <pkg/rbsm/StepReport.hpp>
+#include <core/Scene.hpp>
+
+#include <atomic>
 #include <iostream>
 #include <mutex>
 
 namespace yade {
 
 YADE_PLUGIN((Bo1_Polygon2D_Aabb));
+
+namespace {
+	std::atomic<int> periodicReports { 0 };
+}
 
 void Bo1_Polygon2D_Aabb::postLoad(Bo1_Polygon2D_Aabb&)
 {
@@ -17,6 +25,14 @@ void Bo1_Polygon2D_Aabb::go(const shared_ptr<Shape>& shape, shared_ptr<Bound>& b
 {
 	const Polygon2D& p = static_cast<const Polygon2D&>(*shape);
 	if (!bound) bound = shared_ptr<Bound>(new Aabb);
+	if (scene && scene->isPeriodic) {
+		// Refused at the first step, before any contact: blocks as thick as the cell (the natural 2D
+		// set-up) fail YADE's collider assertion, and blocks wider than the cell are silently missed.
+		rbsm_report::stopForBody(periodicReports, *scene, "Bo1_Polygon2D_Aabb", body ? body->id : -1,
+		                         "is in a periodic cell (O.periodic): Polygon2D blocks do not support periodic cells");
+		bound->min = bound->max = se3.position; // meets nothing, within any cell
+		return;
+	}
 	if (p.vertices.empty()) {
 		// A Polygon2D made without vertices (Polygon2D() in a script). Throwing here would abort
 		// YADE (the collider runs functors in parallel), so the body gets a point bound, meets

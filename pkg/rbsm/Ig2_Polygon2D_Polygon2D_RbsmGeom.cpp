@@ -58,16 +58,6 @@ namespace {
 		return normalsMade(shape, stack, heap);
 	}
 
-	bool isFixed(const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL; }
-
-	Real reducedMass(const State& a, const State& b)
-	{
-		const bool fa = isFixed(a) || !(a.mass > 0), fb = isFixed(b) || !(b.mass > 0);
-		if (fa && fb) return 0;
-		if (fa) return b.mass;
-		if (fb) return a.mass;
-		return a.mass * b.mass / (a.mass + b.mass);
-	}
 
 	// Periodic cells are not supported: reported (StepReport.hpp) and the run stopped at the end of
 	// this step, so that no step runs with the contacts across the cell's boundary missing.
@@ -124,6 +114,17 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	const Vector2r rel(cos1 * d12.x() + sin1 * d12.y(), -sin1 * d12.x() + cos1 * d12.y()); // R(−θ1)(x2 − x1)
 	const Real     relCos = cos1 * cos2 + sin1 * sin2, relSin = cos1 * sin2 - sin1 * cos2;  // θ2 − θ1
 	const rbsm::RelativePose relPose { rel, relCos, relSin };
+	// A block reshaped since this joint was made (Polygon2D.revision): the joint's edge numbers and
+	// search memory belong to the old shape. It is searched afresh on the new shape and gets new
+	// springs (Ip2 makes its phys again: a bonded joint becomes frictional); a joint that no longer
+	// touches is handed to the law as lost. RbsmTimeStepper scales the mass.
+	if (I->geom && !force) {
+		auto* old = static_cast<RbsmGeom*>(I->geom.get());
+		if (old->shapeRevision1 != A.revision || old->shapeRevision2 != B.revision) {
+			old->forgetShapes(A.revision, B.revision);
+			I->phys.reset();
+		}
+	}
 	const bool               existing = I->geom && !force;
 	RbsmGeom*                g        = existing ? static_cast<RbsmGeom*>(I->geom.get()) : nullptr;
 	const Real               minSize  = 2 * std::min(A.circumradius, B.circumradius); // the smaller block's diameter
@@ -182,7 +183,9 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 				auto geom = shared_ptr<RbsmGeom>(new RbsmGeom);
 				geom->setIntegrationPoints(nIP);
 				geom->thickness    = std::min(A.thickness, B.thickness);
-				geom->reducedMass  = reducedMass(state1, state2);
+				geom->reducedMass  = RbsmGeom::reducedMassOf(state1, state2);
+				geom->shapeRevision1 = A.revision;
+				geom->shapeRevision2 = B.revision;
 				geom->searchMemory = newMemory;
 				I->geom            = geom;
 				g                  = geom.get();

@@ -2,6 +2,7 @@
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace yade {
@@ -10,8 +11,11 @@ YADE_PLUGIN((Polygon2D));
 
 void Polygon2D::postLoad(Polygon2D& p)
 {
-	if (!(std::isfinite(p.thickness) && p.thickness > 0))
-		throw std::invalid_argument("Polygon2D.thickness: must be a finite number > 0 (got " + std::to_string(p.thickness) + ")");
+	if (!(std::isfinite(p.thickness) && p.thickness > 0)) {
+		std::ostringstream msg;
+		msg << "Polygon2D.thickness: must be a finite number > 0 (got " << p.thickness << ")";
+		throw std::invalid_argument(msg.str());
+	}
 	if (p.vertices.empty()) throw std::invalid_argument("Polygon2D.vertices: a polygon needs at least 3 vertices (got none)");
 	const std::vector<rbsm::Vec2> v(p.vertices.begin(), p.vertices.end());
 	const std::string problem = rbsm::polygonProblem(v);
@@ -20,16 +24,21 @@ void Polygon2D::postLoad(Polygon2D& p)
 	// Off-centre vertices would put the centre of mass away from State::pos: refuse them rather
 	// than silently produce wrong dynamics. Tolerance relative to the polygon size.
 	const Real size = rbsm::polygonSize(v);
-	if (mp.centroid.norm() > 1e-9 * size)
-		throw std::invalid_argument(
-		        "Polygon2D.vertices: the centroid must be at the origin of the body frame, it is at (" + std::to_string(mp.centroid.x()) + ", "
-		        + std::to_string(mp.centroid.y()) + "); yade_rbsm.polygon2d() builds a body from world-frame vertices");
+	if (mp.centroid.norm() > 1e-9 * size) {
+		std::ostringstream msg; // (%g-like: an offset of 1e-8 m must not print as 0.000000)
+		msg << "Polygon2D.vertices: the centroid must be at the origin of the body frame, it is at (" << mp.centroid.x() << ", "
+		    << mp.centroid.y() << "), " << mp.centroid.norm() / size << " of the polygon's size (tolerance 1e-9); yade_rbsm.polygon2d() builds a body from world-frame vertices";
+		throw std::invalid_argument(msg.str());
+	}
 	p.area         = mp.area;
 	p.polarMoment  = mp.polarMoment;
 	p.circumradius = 0;
 	for (const auto& x : v)
 		p.circumradius = std::max(p.circumradius, x.norm());
 	p.edgeNormals  = rbsm::edgeNormals(v);
+	if (!p.madeFromVertices.empty() && (p.madeFromVertices != p.vertices || p.madeFromThickness != p.thickness)) p.revision++;
+	p.madeFromVertices  = p.vertices;
+	p.madeFromThickness = p.thickness;
 }
 
 Vector2r Polygon2D::worldVertex(size_t i, const Vector2r& pos, Real angle) const

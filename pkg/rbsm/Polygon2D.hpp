@@ -33,13 +33,29 @@ public:
 		((Real, circumradius, 0, (Attr::readonly | Attr::noSave), "Largest distance of a vertex from the centroid [m] (derived)."))
 		((std::vector<Vector2r>, edgeNormals, , (Attr::readonly | Attr::noSave),
 			"Outward unit normals of the edges (edge i from vertex i to i+1) in the body's local frame (derived); the contact "
-			"geometry rotates them with the block instead of normalising every edge at every step.")),
+			"geometry rotates them with the block instead of normalising every edge at every step."))
+		((long, revision, 0, (Attr::readonly | Attr::noSave),
+			"How many times the vertices or the thickness were changed after they were first set (0 after a load). A change "
+			"mid-run is followed at the next step: :yref:`RbsmTimeStepper` scales the body's mass and inertia with the new "
+			"area and polar moment, and the block's joints are made anew from the new shape (as new, unbonded contacts).")),
 		/*ctor*/ createIndex();,
 		/*py*/ .def("worldVertices", &Polygon2D::pyWorldVertices, (boost::python::arg("pos"), boost::python::arg("ori")),
 			"World coordinates of the vertices for a body at *pos* with orientation *ori* (e.g. ``b.state.pos, b.state.ori``).")
 	);
 	// clang-format on
 	REGISTER_CLASS_INDEX(Polygon2D, Shape);
+
+	/// What followReshape (ReshapedBlocks.hpp) last saw of this shape: revision (-1: nothing yet),
+	/// thickness·area and thickness·polarMoment. Not saved.
+	struct Followed {
+		long revision = -1;
+		Real volume = 0, polar = 0;
+	} followed;
+
+private:
+	// the vertices and thickness the derived data were made from: a change bumps revision
+	std::vector<Vector2r> madeFromVertices;
+	Real                  madeFromThickness = 0;
 };
 REGISTER_SERIALIZABLE(Polygon2D);
 

@@ -1,6 +1,7 @@
 // RbsmGeom: geometry of an edge-to-edge contact between two Polygon2D blocks.
 #pragma once
 #include <core/IGeom.hpp>
+#include <core/State.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 #include <pkg/rbsm/kernel/FrozenContact.hpp>
 #include <pkg/rbsm/kernel/SegmentKinematics.hpp>
@@ -94,6 +95,31 @@ public:
 	/// rbsm::FrozenContact). Saved through frozenState, so that a loaded scene continues like the
 	/// uninterrupted run.
 	rbsm::FrozenContact frozen;
+	/// Polygon2D.revision of the two blocks when the joint was made (not saved: 0 after a load, like
+	/// the shapes'); Ig2 makes the joint anew when a block has been reshaped since.
+	long shapeRevision1 = 0, shapeRevision2 = 0;
+	/// Drops what the joint remembers of the blocks' old shapes (edge numbers, search memory, frozen
+	/// contact) and records the new revisions.
+	void forgetShapes(long revision1, long revision2)
+	{
+		searchMemory   = rbsm::SearchMemory();
+		frozen.valid   = false;
+		refBody        = 0;
+		refEdge        = -1;
+		frozenSteps    = 0;
+		shapeRevision1 = revision1;
+		shapeRevision2 = revision2;
+	}
+	/// m1·m2/(m1+m2), a fixed block (or one without a positive mass) counting as infinite mass.
+	static Real reducedMassOf(const State& a, const State& b)
+	{
+		auto       infinite = [](const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL || !(s.mass > 0); };
+		const bool fa = infinite(a), fb = infinite(b);
+		if (fa && fb) return 0;
+		if (fa) return b.mass;
+		if (fb) return a.mass;
+		return a.mass * b.mass / (a.mass + b.mass);
+	}
 	void                preSave(RbsmGeom&) { frozenState = rbsm::packFrozen(frozen); }
 	void                postLoad(RbsmGeom&);
 	REGISTER_CLASS_INDEX(RbsmGeom, IGeom);

@@ -1,6 +1,7 @@
 #include <pkg/rbsm/RbsmMat.hpp>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace yade {
@@ -8,29 +9,28 @@ namespace yade {
 YADE_PLUGIN((RbsmMat));
 
 namespace {
-	void require(bool ok, const RbsmMat& m, const char* attribute, const std::string& what)
+	// what is the problem with value of attribute, if not ok: "RbsmMat 'label'.attribute: what (got value)"
+	void require(bool ok, const RbsmMat& m, const char* attribute, Real value, const char* what)
 	{
-		if (!ok) {
-			const std::string name = m.label.empty() ? "RbsmMat" : "RbsmMat '" + m.label + "'";
-			throw std::invalid_argument(name + "." + attribute + ": " + what);
-		}
+		if (ok) return;
+		std::ostringstream msg; // (%g-like: 1e-8 must not print as 0.000000)
+		msg << (m.label.empty() ? "RbsmMat" : "RbsmMat '" + m.label + "'") << "." << attribute << ": " << what << " (got " << value << ")";
+		throw std::invalid_argument(msg.str());
 	}
 }
 
 void RbsmMat::postLoad(RbsmMat& m)
 {
-	require(std::isfinite(m.density) && m.density > 0, m, "density", "must be a finite number > 0 (got " + std::to_string(m.density) + ")");
-	require(std::isfinite(m.young) && m.young > 0, m, "young", "must be a finite number > 0 (got " + std::to_string(m.young) + ")");
-	require(std::isfinite(m.poisson) && m.poisson > -1 && m.poisson < 0.5, m, "poisson", "must be in (-1, 0.5) (got " + std::to_string(m.poisson) + ")");
+	require(std::isfinite(m.density) && m.density > 0, m, "density", m.density, "must be a finite number > 0");
+	require(std::isfinite(m.young) && m.young > 0, m, "young", m.young, "must be a finite number > 0");
+	require(std::isfinite(m.poisson) && m.poisson > -1 && m.poisson < 0.5, m, "poisson", m.poisson, "must be in (-1, 0.5)");
 	require(std::isfinite(m.frictionAngle) && m.frictionAngle >= 0 && m.frictionAngle < Mathr_PI / 2,
 	        m,
 	        "frictionAngle",
-	        "must be in [0, pi/2) radians (got " + std::to_string(m.frictionAngle) + ")");
-	require(std::isfinite(m.cohesion) && m.cohesion >= 0, m, "cohesion", "must be a finite number >= 0 (got " + std::to_string(m.cohesion) + ")");
-	require(std::isfinite(m.tensileStrength) && m.tensileStrength >= 0,
-	        m,
-	        "tensileStrength",
-	        "must be a finite number >= 0 (got " + std::to_string(m.tensileStrength) + ")");
+	        m.frictionAngle,
+	        "must be in [0, pi/2) radians");
+	require(std::isfinite(m.cohesion) && m.cohesion >= 0, m, "cohesion", m.cohesion, "must be a finite number >= 0");
+	require(std::isfinite(m.tensileStrength) && m.tensileStrength >= 0, m, "tensileStrength", m.tensileStrength, "must be a finite number >= 0");
 }
 
 } // namespace yade

@@ -22,7 +22,9 @@ public:
 		((Real, cohesion, 0, Attr::triggerPostLoad, "Cohesion c of intact joints [Pa] (≥ 0); lost when the joint breaks."))
 		((Real, tensileStrength, 0, Attr::triggerPostLoad, "Tensile strength σt of intact joints [Pa] (≥ 0); lost when the joint breaks.")),
 		/*ctor*/ createIndex(); density = 2600;,
-		/*py*/
+		/*py*/ .add_property("density", boost::python::make_getter(&Material::density, boost::python::return_value_policy<boost::python::return_by_value>()),
+			&detail::setThenPostLoad<RbsmMat, Material, Real, &Material::density>,
+			"Density of the blocks [kg/m³] (> 0); checked when set, like the attributes above (Material's own density is not).")
 	);
 	// clang-format on
 	REGISTER_CLASS_INDEX(RbsmMat, Material);

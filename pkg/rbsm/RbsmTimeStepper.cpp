@@ -1,15 +1,18 @@
+#include <pkg/rbsm/BlockStateCheck.hpp>
 #include <pkg/rbsm/Ip2_RbsmMat_RbsmMat_RbsmPhys.hpp>
 #include <pkg/rbsm/Polygon2D.hpp>
 #include <pkg/rbsm/RbsmGeom.hpp>
 #include <pkg/rbsm/RbsmMat.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
 #include <pkg/rbsm/RbsmTimeStepper.hpp>
+#include <pkg/rbsm/ReshapedBlocks.hpp>
 #include <pkg/rbsm/StepReport.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
 #include <core/Scene.hpp>
 
 #include <boost/python.hpp>
 
+#include <atomic>
 #include <cmath>
 #include <sstream>
 
@@ -69,6 +72,7 @@ namespace {
 	}
 
 	std::atomic<int> motionReports { 0 };
+	std::atomic<int> blockStateReports { 0 };
 }
 
 void RbsmTimeStepper::postLoad(RbsmTimeStepper&)
@@ -328,6 +332,26 @@ Real RbsmTimeStepper::limit()
 
 void RbsmTimeStepper::action()
 {
+	// Per-body pass (issue 15), every step, on this thread: a reshaped block gets the mass of its new
+	// shape (ReshapedBlocks.hpp); a block whose state the model cannot integrate is reported by id
+	// and the run stops after this step (BlockStateCheck.hpp), without the estimate below, which
+	// would throw without naming the body. It runs before the estimate and checkMotion (which read
+	// the masses and inner radii), so it is a pass of its own.
+	{
+		bool reshaped = false, bad = false;
+		for (const auto& b : scene->bodies->body) {
+			if (!b) continue;
+			reshaped |= followReshape(*b, *scene->bodies);
+			const std::string problem = blockStateProblem(*b);
+			if (problem.empty()) continue;
+			rbsm_report::stopForBody(blockStateReports, *scene, "RbsmTimeStepper", b->id, problem);
+			bad = true;
+		}
+		if (bad) return;
+		// a lighter block may need a shorter step now, its joints were made anew (their phys
+		// again, without a new iterMadeReal) and its inner radius changed: a full estimate now
+		if (reshaped) lastCheck = -1;
+	}
 	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: estimate now)
 	const long made = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
 	if (lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval) fullCheck();

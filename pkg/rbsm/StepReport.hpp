@@ -43,5 +43,18 @@ namespace rbsm_report {
 			return msg.str();
 		});
 	}
+	/// A body the model cannot handle, found by engine `who` during a step: the run stops after this
+	/// step, and "yade-rbsm: ERROR: who: body #id problem; the run stops after step N" is printed as
+	/// limited() prints.
+	inline void stopForBody(std::atomic<int>& count, Scene& scene, const char* who, int id, const std::string& problem)
+	{
+		stopAfterThisStep(scene);
+		limited(count, [&](bool last) {
+			std::ostringstream msg;
+			msg << "yade-rbsm: ERROR: " << who << ": body #" << id << " " << problem << "; the run stops after step " << scene.iter
+			    << (last ? "; further such errors are not shown" : "");
+			return msg.str();
+		});
+	}
 } // namespace rbsm_report
 } // namespace yade

@@ -29,6 +29,14 @@ def polygon_properties(vertices):
     return area, (cx + ox, cy + oy), j
 
 
+def _signed_area(vertices):
+    """Signed area of a polygon (shoelace, relative to the first vertex); > 0 counter-clockwise."""
+    ox, oy = vertices[0]
+    n = len(vertices)
+    return 0.5 * sum((vertices[i][0] - ox) * (vertices[(i + 1) % n][1] - oy) - (vertices[(i + 1) % n][0] - ox) * (vertices[i][1] - oy)
+                     for i in range(n))
+
+
 def _describe(pts, most=4):
     """Short text naming a polygon by its first vertices, for error messages."""
     shown = ", ".join("(%g, %g)" % p for p in pts[:most])
@@ -70,6 +78,14 @@ def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=F
     if not all(math.isfinite(c) for p in pts for c in p):
         raise ValueError("polygon2d: vertices contain NaN or inf")
     try:
+        if _signed_area(pts) == 0:
+            # a bow-tie has zero area too: Polygon2D calls it self-intersecting, which says more
+            ox, oy = pts[0]
+            try:
+                wrapper.Polygon2D(vertices=[(x - ox, y - oy) for x, y in pts])
+            except ValueError as e:
+                if "self-intersecting" in str(e):
+                    raise
         area, (cx, cy), j = polygon_properties(pts)
         # Polygon2D checks convexity, orientation and degeneracy and names the problem (ValueError).
         shape = wrapper.Polygon2D(vertices=[(x - cx, y - cy) for x, y in pts], thickness=thickness, wire=wire)

@@ -43,6 +43,8 @@ the slope", a non-positive band) raises ValueError naming the problem.
 import math
 from dataclasses import dataclass
 
+from .checks import count, number
+
 __all__ = ["ContactFS", "contact_fs", "contact_fs_circle", "SlipSurface", "slipping_surface", "slip_surface_fs",
            "point_polyline_distance", "table2", "le_slope", "circle_through", "limit_equilibrium_summary",
            "fs_table", "check_polyline", "probe_slipping_surface"]
@@ -334,6 +336,9 @@ def probe_slipping_surface(steps=500, damping=0.0, check=20, O=None, **kw):
     keywords *kw*), then restore the state (O.saveTmp / O.loadTmp): the surface of a failing slope
     read from its first motion, to evaluate the contact forces of the equilibrium state along it.
     Returns a SlipSurface or None."""
+    steps = count("probe_slipping_surface", "steps", steps, 0)
+    check = count("probe_slipping_surface", "check", check)
+    damping = number("probe_slipping_surface", "damping", damping, 0, 1, high_open=True)
     if O is None:
         from yade import O
     mark = "rbsm_slip_probe"
@@ -402,6 +407,8 @@ def slip_surface_fs(surface=None, ground=None, material=None, g=9.81, n=50, O=No
     the ground extended to it, module docstring), or along the limit_equilibrium.Slope *slope*
     (its ground and layers: e.g. the strength of the joints rather than of the blocks). *tol*: as in :func:`contact_fs`, default 0.1 x
     the median joint length. ValueError if no joint slips."""
+    g = number("slip_surface_fs", "g", g, 0, low_open=True)
+    n = count("slip_surface_fs", "n", n)
     if O is None:
         from yade import O
     ss = surface if surface is not None else slipping_surface(O=O)
@@ -453,6 +460,9 @@ def le_slope(surface, material=None, c=None, phi=None, density=None, g=9.81):
         density = material.density if density is None else density
     if c is None or phi is None or density is None:
         raise ValueError("le_slope: give a material or c, phi and density")
+    c, g = number("le_slope", "c", c, 0), number("le_slope", "g", g, 0, low_open=True)
+    phi = number("le_slope", "phi", phi, 0, math.pi / 2, high_open=True)
+    density = number("le_slope", "density", density, 0, low_open=True)
     return le.Slope([(float(x), float(y)) for x, y in surface],
                     le.Layer(c=c / 1e3, phi=math.degrees(phi), gamma=density * g / 1e3, name="blocks"))
 

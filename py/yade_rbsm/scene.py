@@ -1,6 +1,8 @@
 """The engines of an RBSM scene, in one call that stays readable and changeable."""
 from yade import wrapper
 
+from .checks import count, number
+
 __all__ = ["engines", "critical_time_step"]
 
 
@@ -26,7 +28,24 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     O.bodies (YADE's automatic value is for spheres and becomes 0 without them, which re-sorts the
     bounds at every step: 9 % of the step of a brick wall, docs/benchmarks.md).
     Labels: collider, ig2, ip2, law, timeStepper, newton.
+    Periodic cells (O.periodic) are not supported: ValueError.
     """
+    from yade import O
+    if O.periodic:
+        raise ValueError("engines: O.periodic is set, and Polygon2D blocks do not support periodic cells")
+    try:
+        gravity = tuple(number("engines", "gravity[%d]" % k, gravity[k]) for k in range(3))
+    except (TypeError, IndexError):
+        raise ValueError("engines: gravity must be 3 finite numbers (got %r)" % (gravity,)) from None
+    damping = number("engines", "damping", damping, 0, 1, high_open=True)
+    contact_damping = number("engines", "contact_damping", contact_damping, 0)
+    nIP = count("engines", "nIP", nIP)
+    safety = number("engines", "safety", safety, 0, 1, low_open=True)
+    interval = count("engines", "interval", interval)
+    enlarge = number("engines", "enlarge", enlarge, 0)
+    update_tolerance = number("engines", "update_tolerance", update_tolerance, 0, 0.1, high_open=True)
+    if verlet_dist is not None:
+        verlet_dist = number("engines", "verlet_dist", verlet_dist, 0)
     collider = wrapper.InsertionSortCollider([wrapper.Bo1_Polygon2D_Aabb(enlarge=enlarge)], label="collider")
     if verlet_dist is None:
         verlet_dist = 0.01 * _smallest_block()

@@ -33,6 +33,7 @@ import math
 from dataclasses import dataclass, field
 from typing import List, Optional, Sequence, Tuple
 
+
 __all__ = ["Block", "SlopeBlocks", "brick_blocks", "column_blocks", "voronoi_slope_blocks", "slope_polygon",
            "cut_polygons", "polygon_area", "region_area", "check_polygon", "build_scene", "bond_and_break",
            "break_crack", "break_joints", "unbalanced_ratio", "settle"]
@@ -801,6 +802,10 @@ def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None):
     ratio (:func:`unbalanced_ratio`) is below *tol*, checked every *check* steps, or *max_steps*.
     Restores the previous damping. Returns (converged, steps, ratio)."""
     from yade import O
+    from .checks import count, number  # (here: the geometry above is also loaded without the package)
+    tol = number("settle", "tol", tol, 0, low_open=True)
+    max_steps, check = count("settle", "max_steps", max_steps), count("settle", "check", check)
+    damping = number("settle", "damping", damping, 0, 1, high_open=True)
     newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
     old = newton.damping
     newton.damping = damping

@@ -36,6 +36,8 @@ import time
 from dataclasses import dataclass, field
 from typing import List, Optional, Tuple
 
+from .checks import count, number
+
 __all__ = ["SRResult", "Trial", "strength_reduction", "trial", "reduce_strengths"]
 
 
@@ -86,6 +88,7 @@ class _Reference:
 def reduce_strengths(F, ref, reduce_tensile=False):
     """Divide tanφ and c of every joint and material by F (from the reference values *ref*)."""
     from yade import O
+    F = number("reduce_strengths", "F", F, 0, low_open=True)
     for k, (phi, c, t) in ref.mats.items():
         m = O.materials[k]
         m.frictionAngle = math.atan(math.tan(phi) / F)
@@ -109,12 +112,19 @@ def _free_ids():
     return [b.id for b in O.bodies if b is not None and b.state.blockedDOFs != "xyzXYZ"]
 
 
+def _trial_args(where, F, tol, d_fail, max_steps, check, damping):
+    return (number(where, "F", F, 0, low_open=True), number(where, "tol", tol, 0, low_open=True),
+            number(where, "d_fail", d_fail, 0, low_open=True), count(where, "max_steps", max_steps),
+            count(where, "check", check), number(where, "damping", damping, 0, 1, high_open=True))
+
+
 def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=100, damping=0.7,
           reduce_tensile=False, verbose=False):
     """One trial at factor *F* from the state saved under *mark* (see the module docstring).
     Returns a :class:`Trial`."""
     from yade import O, Vector3
     from .slope import unbalanced_ratio
+    F, tol, d_fail, max_steps, check, damping = _trial_args("trial", F, tol, d_fail, max_steps, check, damping)
     w0 = time.time()
     O.loadTmp(mark)
     for e in O.engines:
@@ -155,8 +165,11 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     *ids*: monitored blocks for the runaway criterion (default: all free blocks). Returns an
     :class:`SRResult`; raises RuntimeError if no bracket is found within *max_trials* trials."""
     from yade import O
-    if not (start > 0 and grow > 1 and rtol > 0):
-        raise ValueError("strength_reduction: need start > 0, grow > 1, rtol > 0")
+    where = "strength_reduction"
+    start, tol, d_fail, max_steps, check, damping = _trial_args(where, start, tol, d_fail, max_steps, check, damping)
+    grow = number(where, "grow", grow, 1, low_open=True)
+    rtol = number(where, "rtol", rtol, 0, low_open=True)
+    max_trials = count(where, "max_trials", max_trials)
     ref = _Reference()
     O.saveTmp(mark)
     trials = []

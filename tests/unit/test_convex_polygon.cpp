@@ -149,3 +149,12 @@ TEST(EdgeNormals, SquareAndTriangle)
 	EXPECT_NEAR(tri[1].x(), 1 / std::sqrt(2.0), 1e-15);
 	EXPECT_NEAR(tri[1].y(), 1 / std::sqrt(2.0), 1e-15);
 }
+
+// Issue 15: a 1e9:1 sliver was called a "repeated vertex" (two of its corners are 1e-9 of its size
+// apart); it is named a sliver, with its area and size.
+TEST(PolygonProblem, SliverNamedSliver)
+{
+	const auto s = polygonProblem({ { 0, 0 }, { 1, 0 }, { 1, 1e-9 }, { 0, 1e-9 } });
+	EXPECT_TRUE(contains(s, "sliver")) << s;
+	EXPECT_FALSE(contains(s, "repeated")) << s;
+}

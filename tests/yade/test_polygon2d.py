@@ -162,9 +162,10 @@ def test_script_error_fails_the_run():
 
 
 def test_periodic_cell_is_refused_without_a_crash():
-    """Two blocks touching across a periodic cell's boundary: not supported. The geometry functor names the bodies
-    on stderr and stops the run after the step (an exception cannot leave YADE's OpenMP loop; before, YADE died in
-    std::terminate)."""
+    """Two blocks touching across a periodic cell's boundary: periodic cells are not supported. The bound functor
+    names each body on stderr at the first step and stops the run after it (an exception cannot leave YADE's
+    OpenMP loop; before, YADE died in std::terminate). Since issue 15 the refusal is for any periodic cell (a cell as
+    thick as the blocks aborted in YADE's collider assertion), not only for contacts across its boundary."""
     p = run_yade("""
 from yade_rbsm.blocks import polygon2d
 mat = RbsmMat(young=1e9, poisson=0.2, density=2000, frictionAngle=0.5)
@@ -181,5 +182,6 @@ O.run(10, True)
 report(iter=O.iter, contacts=O.interactions.countReal())
 """, jobs=2)
     assert p.returncode == 0, p.stderr[-3000:]
-    assert "bodies #0 and #1 meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported" in p.stderr, p.stderr[-3000:]
+    for body in (0, 1):
+        assert "body #%d is in a periodic cell (O.periodic): Polygon2D blocks do not support periodic cells" % body in p.stderr, p.stderr[-3000:]
     assert results(p) == [{"iter": 1, "contacts": 0}]

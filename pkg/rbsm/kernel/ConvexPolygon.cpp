@@ -75,7 +75,15 @@ std::string polygonProblem(const std::vector<Vec2>& v)
 		for (size_t j = i + 1; j < n; ++j)
 			if ((v[i] - v[j]).norm() <= kRepeatTol * L) {
 				std::ostringstream o;
-				o << "repeated vertex: vertex " << j << " equals vertex " << i;
+				// Two corners of a sliver (a 1e9:1 rectangle) are this close too; name the shape, not a typo.
+				Real twiceArea = 0;
+				for (size_t k = 0; k < n; ++k)
+					twiceArea += cross2(v[k] - v[0], v[(k + 1) % n] - v[0]);
+				if (std::abs(twiceArea) / 2 <= kRepeatTol * L * L)
+					o << "sliver: area " << std::abs(twiceArea) / 2 << " m² is below 1e-9 of its size squared (size " << L
+					  << " m), too thin to model (vertices " << i << " and " << j << " are " << (v[i] - v[j]).norm() << " m apart)";
+				else
+					o << "repeated vertex: vertex " << j << " equals vertex " << i;
 				return o.str();
 			}
 

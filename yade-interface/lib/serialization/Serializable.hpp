@@ -12,7 +12,10 @@
 #include <boost/preprocessor.hpp>
 #include <boost/python.hpp>
 #include <boost/serialization/base_object.hpp>
+#include <string>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace yade {
 
@@ -81,7 +84,8 @@ namespace detail {
 
 	// Set an attribute whose postLoad checks it; a value that postLoad rejects is undone, so a
 	// failed assignment from Python leaves the object (and the scene) as it was.
-	template <class C, class T, T C::*Member> void setThenPostLoad(C& instance, const T& value)
+	// (Member may belong to a base class B of C: RbsmMat checks Material's density this way.)
+	template <class C, class B, class T, T B::*Member> void setThenPostLoad(C& instance, const T& value)
 	{
 		T previous       = instance.*Member;
 		instance.*Member = value;
@@ -91,6 +95,37 @@ namespace detail {
 			instance.*Member = previous;
 			try {
 				instance.callPostLoad(); // refresh what postLoad derives from the restored value
+			} catch (...) {
+			}
+			throw;
+		}
+	}
+
+	// updateAttrs of the plugin's classes: all the values of d or none. YADE's own
+	// Serializable::pyUpdateAttrs sets every value, then calls postLoad, and keeps a value that
+	// postLoad refuses; here every value set is put back (in reverse order) before the error goes on.
+	template <class C> void updateAttrsOrNothing(C& instance, const boost::python::dict& d)
+	{
+		namespace py = boost::python;
+		const py::dict                                   before = instance.pyDict();
+		const py::list                                   keys   = d.keys();
+		std::vector<std::pair<std::string, py::object>> saved;
+		try {
+			for (py::ssize_t i = 0; i < py::len(keys); i++) {
+				const std::string key = py::extract<std::string>(keys[i]);
+				if (before.has_key(key)) saved.emplace_back(key, before[key]);
+				instance.pySetAttr(key, d[keys[i]]);
+			}
+			instance.callPostLoad();
+		} catch (...) {
+			for (auto it = saved.rbegin(); it != saved.rend(); ++it) {
+				try {
+					instance.pySetAttr(it->first, it->second);
+				} catch (...) {
+				}
+			}
+			try {
+				instance.callPostLoad(); // refresh what postLoad derives from the restored values
 			} catch (...) {
 			}
 			throw;
@@ -108,13 +143,13 @@ namespace detail {
 		if constexpr (ReturnsReference<T>::value) {
 			if (readonly) cls.def_readonly(name, Member, doc.c_str());
 			else if (post)
-				cls.add_property(name, py::make_getter(Member), &setThenPostLoad<C, T, Member>, doc.c_str());
+				cls.add_property(name, py::make_getter(Member), &setThenPostLoad<C, C, T, Member>, doc.c_str());
 			else
 				cls.def_readwrite(name, Member, doc.c_str());
 		} else {
 			if (readonly) cls.add_property(name, py::make_getter(Member, byValue()), doc.c_str());
 			else if (post)
-				cls.add_property(name, py::make_getter(Member, byValue()), &setThenPostLoad<C, T, Member>, doc.c_str());
+				cls.add_property(name, py::make_getter(Member, byValue()), &setThenPostLoad<C, C, T, Member>, doc.c_str());
 			else
 				cls.add_property(name, py::make_getter(Member, byValue()), py::make_setter(Member, byValue()), doc.c_str());
 		}
@@ -211,6 +246,8 @@ public:                                                                         
 		boost::python::class_<thisClass, shared_ptr<thisClass>, boost::python::bases<baseClass>, boost::noncopyable> _classObj(               \
 		        #thisClass, docString);                                                                                                        \
 		_classObj.def("__init__", ::yade::raw_constructor(::yade::Serializable_ctor_kwAttrs<thisClass>));                                      \
+		_classObj.def("updateAttrs", &::yade::detail::updateAttrsOrNothing<thisClass>, boost::python::arg("d"),                             \
+		              "Set the attributes of dict *d*, all or none: a value refused (ValueError) leaves every attribute as it was.");      \
 		BOOST_PP_SEQ_FOR_EACH(_YADE_ATTR_PYDEF, thisClass, attrs)                                                                              \
 		(void)_classObj extras;                                                                                                                \
 	}

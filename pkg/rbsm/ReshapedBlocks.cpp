@@ -1,0 +1,32 @@
+#include <pkg/rbsm/Polygon2D.hpp>
+#include <pkg/rbsm/ReshapedBlocks.hpp>
+#include <pkg/rbsm/RbsmGeom.hpp>
+#include <core/Interaction.hpp>
+#include <core/State.hpp>
+
+namespace yade {
+
+bool followReshape(Body& b, const BodyContainer& bodies)
+{
+	if (!b.shape || !b.state || b.shape->getClassIndex() != Polygon2D::getClassIndexStatic()) return false;
+	Polygon2D& p = static_cast<Polygon2D&>(*b.shape);
+	if (p.revision == p.followed.revision) return false;
+	const Real volume = p.thickness * p.area, polar = p.thickness * p.polarMoment;
+	const bool rescale = p.followed.revision >= 0 && p.followed.volume > 0 && p.followed.polar > 0;
+	if (rescale) {
+		State& s = *b.state;
+		s.mass *= volume / p.followed.volume;
+		s.inertia *= polar / p.followed.polar;
+		for (const auto& idI : b.intrs) {
+			const Interaction& I = *idI.second;
+			if (!I.geom || I.geom->getClassIndex() != RbsmGeom::getClassIndexStatic()) continue;
+			const Body* b1 = bodies.body[I.getId1()].get();
+			const Body* b2 = bodies.body[I.getId2()].get();
+			if (b1 && b2) static_cast<RbsmGeom&>(*I.geom).reducedMass = RbsmGeom::reducedMassOf(*b1->state, *b2->state);
+		}
+	}
+	p.followed = Polygon2D::Followed { p.revision, volume, polar };
+	return rescale;
+}
+
+} // namespace yade
