@@ -135,7 +135,9 @@ Real RbsmTimeStepper::blockDt(size_t id) const
 	const Real w2 = rowBounds[kRow * id], dashpot = rowBounds[kRow * id + 1], spring = rowBounds[kRow * id + 2];
 	if (!(w2 > 0)) return std::numeric_limits<Real>::infinity();
 	const Real w = std::sqrt(w2), xi = spring > 0 ? dashpot / spring * w / 2 : 0;
-	return 2 / w * (std::sqrt(1 + xi * xi) - xi);
+	// √(1+ξ²) − ξ as 1/(√(1+ξ²) + ξ): the difference cancels to 0 for ξ ≳ 1e8 (a stiff dashpot
+	// is a short step, not an infinitely stiff joint); hypot keeps ξ² from overflowing.
+	return 2 / w / (std::hypot(Real(1), xi) + xi);
 }
 
 void RbsmTimeStepper::boundsHold(size_t nBodies)
