@@ -4,11 +4,13 @@
 # heap reads and an uninitialised value in rbsm::followContact / keepHinted). Any valgrind error fails.
 # Usage: valgrind_reshape.sh <rbsm_unit_tests> <yade-rbsm launcher> <overlay prefix> <PYTHONPATH> <yade>
 # YADE runs as the launcher would run it, but without the launcher's bash in between (valgrind on
-# the dynamic loader under --trace-children reports glibc's own strncmp in is_dst).
+# the dynamic loader under --trace-children reports glibc's own strncmp in is_dst). The same ld.so
+# read is reported at YADE's own dlopen for some lengths of the environment (PYTHONPATH, worktree
+# path): valgrind.supp suppresses exactly that frame (strncmp called by is_dst), nothing else.
 set -euo pipefail
 unit="$1" launcher="$2" overlay="$3" pythonpath="$4" yade="$5"
 here="$(cd "$(dirname "$0")" && pwd)"
-vg=(valgrind --error-exitcode=1 -q --num-callers=30)
+vg=(valgrind --error-exitcode=1 -q --num-callers=30 --suppressions="$here/valgrind.supp")
 "${vg[@]}" "$unit" --gtest_brief=1
 YADE_RBSM_REFRESH_ONLY=1 "$launcher" # the overlay prefix with this build's plugin
 python=$(head -1 "$yade" | sed 's/^#!//')
