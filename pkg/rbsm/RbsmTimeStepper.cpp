@@ -85,6 +85,8 @@ Real RbsmTimeStepper::estimate()
 
 void RbsmTimeStepper::action()
 {
+	// in every step: the one serial place of an RBSM step that sees a VTKRecorder added to O.engines
+	vtkRecorderGuard.check(*scene);
 	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: check now)
 	if (lastCheck >= 0 && scene->iter >= lastCheck && scene->iter - lastCheck < interval) return;
 	lastCheck        = scene->iter;

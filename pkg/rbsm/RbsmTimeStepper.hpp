@@ -1,6 +1,7 @@
 // RbsmTimeStepper: the stability limit of the explicit integration of an RBSM block system.
 #pragma once
 #include <core/GlobalEngine.hpp>
+#include <pkg/rbsm/VtkRecorderGuard.hpp>
 #include <pkg/rbsm/kernel/CriticalTimeStep.hpp>
 
 namespace yade {
@@ -15,6 +16,8 @@ public:
 			throw std::invalid_argument("RbsmTimeStepper.safetyFactor: must be in (0, 1] (got " + std::to_string(safetyFactor) + ")");
 		if (interval < 1) throw std::invalid_argument("RbsmTimeStepper.interval: must be >= 1 (got " + std::to_string(interval) + ")");
 	}
+	//! Switches off a VTKRecorder whose recorders would crash YADE on RBSM joints (see VtkRecorderGuard).
+	VtkRecorderGuard vtkRecorderGuard;
 	//! Critical time step of the current system [s] (+inf if no RBSM joint exists yet).
 	Real estimate();
 	// clang-format off
@@ -28,7 +31,10 @@ public:
 		"Place it after :yref:`InteractionLoop` and before :yref:`NewtonIntegrator`, so that the joints of this step are "
 		"known before the integration. Every :yref:`interval<RbsmTimeStepper.interval>` steps: if "
 		":yref:`setDt<RbsmTimeStepper.setDt>`, O.dt becomes safetyFactor·dt_crit; otherwise a step with "
-		"O.dt > safetyFactor·dt_crit is refused with an error before anything moves.",
+		"O.dt > safetyFactor·dt_crit is refused with an error before anything moves.\n\n"
+		"At every step it also switches off (dead) a :yref:`VTKRecorder` whose recorders (intr, stress, bstresses, all, ...) "
+		"would read the RBSM joints as sphere contacts and crash YADE, and says so (yade_rbsm.vtkexport.recorder records blocks "
+		"and joints instead).",
 		((Real, safetyFactor, 0.8, Attr::triggerPostLoad, "Fraction of the critical step allowed (0 < safetyFactor ≤ 1)."))
 		((bool, setDt, false, , "Set O.dt to safetyFactor·dt_crit (True) or only check it and refuse an unstable O.dt (False)."))
 		((int, interval, 100, Attr::triggerPostLoad, "Check every this many steps (the first step is always checked). One estimate costs about one InteractionLoop pass of the exact geometry (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
