@@ -96,3 +96,69 @@ report(F=[[F[a, b] for b in range(3)] for a in range(3)], Fw=[[Fw[a, b] for b in
     assert r["lo"] == pytest.approx([-3, -1, -0.5], abs=5e-3) and r["hi"] == pytest.approx([3, 3, 0.5], abs=5e-3)  # (joint overlaps: mm)
     assert r["n"] == pytest.approx(1 - 12 / 24, abs=2e-3)  # base 6 + three blocks 2, box 6 x 4
     assert r["n2"] == pytest.approx(1 - 6 / 20)
+
+
+def test_vtkexporter_contact_points_at_the_middle_of_the_joint(tmp_path):
+    """YADE's export.VTKExporter.exportContactPoints reads i.geom.contactPoint (RbsmGeom has it, z = 0)."""
+    r = run_ok(STACK + """
+O.run(3, True)
+from yade import export
+vtk = export.VTKExporter(%r)
+vtk.exportContactPoints(what={'fn': 'i.phys.normalForce'})
+g = O.interactions[0, 1].geom
+report(cp=list(g.contactPoint), mid=[0.5 * (g.p0[0] + g.p1[0]), 0.5 * (g.p0[1] + g.p1[1]), 0.0], fn=O.interactions[0, 1].phys.normalForce)
+""" % str(tmp_path / "e"), workdir=str(tmp_path))[0]
+    assert r["cp"] == pytest.approx(r["mid"], abs=1e-12)
+    text = (tmp_path / "e-cps-00000000.vtk").read_text().split("\n")
+    assert text[5] == "POINTS 1 double"
+    assert [float(v) for v in text[6].split()] == pytest.approx(r["cp"], abs=1e-5)
+    assert float(text[text.index("LOOKUP_TABLE default") + 1]) == pytest.approx(r["fn"], rel=1e-5)
+
+
+def test_polygon2d_reference_position_is_where_the_block_is_made():
+    """Displacements (pos - refPos: qt view, Monitor, VtkSeries, snapshots) start at 0 in a user's scene."""
+    r = run_ok(STACK + """
+report(ref=[list(b.state.refPos) for b in O.bodies], pos=[list(b.state.pos) for b in O.bodies])
+""")[0]
+    assert r["ref"] == r["pos"] and r["pos"][1] == pytest.approx([0, 0.75, 0])
+
+
+def test_vtk_recorder_engine_writes_blocks_joints_and_stresses(tmp_path):
+    """yade_rbsm.vtkexport.recorder: the VTKRecorder of RBSM scenes, from O.engines."""
+    r = run_ok(COLUMN + """
+from yade_rbsm import vtkexport, measure
+rec = vtkexport.recorder(%r, 'col', iterPeriod=10)
+O.engines = O.engines + [rec]
+O.run(25, True)
+s = vtkexport.series_of(rec)
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+rd = vtkXMLPolyDataReader(); rd.SetFileName(s.files[-2]); rd.Update()
+pd = rd.GetOutput(); cd = pd.GetCellData()
+ids = [cd.GetArray('id').GetValue(k) for k in range(pd.GetNumberOfCells())]
+k = ids.index(2)
+report(files=[f.rsplit('/', 1)[1] for f in s.files], n=pd.GetNumberOfCells(), syy=cd.GetArray('stress').GetTuple9(k)[4],
+       expect=measure.block_stresses()[2][1, 1])
+""" % str(tmp_path))[0]
+    assert r["files"] == ["col_blocks_0000.vtp", "col_contacts_0000.vtp", "col_blocks_0001.vtp", "col_contacts_0001.vtp",
+                          "col_blocks_0002.vtp", "col_contacts_0002.vtp"]
+    assert r["n"] == 4 and r["syy"] == pytest.approx(r["expect"], rel=1e-9) and r["syy"] < 0
+
+
+def test_text_export_of_blocks_and_back(tmp_path):
+    """yade_rbsm.textexport.text / read: what YADE's export.text does for spheres (it writes only a header for blocks)."""
+    r = run_ok(STACK + """
+O.bodies[1].state.ori = Quaternion((0, 0, 1), 0.3)
+from yade_rbsm import textexport
+from yade import export
+n = textexport.text(%r, comment='two blocks')
+back = textexport.read(%r)
+yade_lines = export.text(%r)
+report(n=n, back=[[i, [list(v) for v in vs], t] for i, vs, t in back],
+       world=[[list(v) for v in b.shape.worldVertices(b.state.pos, b.state.ori)] for b in O.bodies], yade=yade_lines)
+""" % ((str(tmp_path / "b.txt"),) * 2 + (str(tmp_path / "y.txt"),)))[0]
+    assert r["n"] == 2 and r["yade"] == 0
+    assert [b[0] for b in r["back"]] == [0, 1]
+    for (i, verts, t), world in zip(r["back"], r["world"]):
+        assert sum(verts, []) == pytest.approx(sum(world, []), abs=1e-15) and t == 1.0
+    line = (tmp_path / "b.txt").read_text().split("\n")[3].split()
+    assert float(line[3]) == pytest.approx(0.3)
