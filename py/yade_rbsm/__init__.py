@@ -14,4 +14,5 @@ else:
 
 # submodules (import them explicitly): slope, safety, snapshots, limit_equilibrium, vtkexport (VTK
 # output, recorder() engine), measure (stress and fabric tensors, extrema: YADE's sphere-only utilities
-# for blocks), textexport (blocks to and from text), gui (qt view, snapshots), monitor (yade.plot series, progress line), strength_reduction (FS by strength reduction)
+# for blocks), textexport (blocks to and from text), gui (qt view, snapshots), monitor (yade.plot
+# series, progress line), strength_reduction (FS by strength reduction)

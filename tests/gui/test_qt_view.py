@@ -118,3 +118,17 @@ Gl1_RbsmGeom.color = %s
     ys, xs = np.nonzero(g)
     assert len(xs) > 1.5 * s and ys.max() <= ytop + 4
     assert ys.min() < ytop - 0.3 * s, "no normal tick above the contact"
+
+
+def test_joint_line_width_grows_with_normal_force(filled):
+    """Gl1_RbsmPhys.maxWidth: the bonded joint, at refForce or above, is drawn maxWidth (9 px) wide instead of lineWidth (3 px)."""
+    png, _ = snapshot(SCENE + """
+from yade import qt
+qt.Renderer().intrPhys = True
+assert O.interactions[0, 1].phys.normalForce > 1
+Gl1_RbsmPhys.maxWidth, Gl1_RbsmPhys.refForce = 9, 1.0
+""")
+    wide, thin = mask(load_rgb(png), INTACT), mask(filled, INTACT)
+    ys_w, ys_t = np.nonzero(wide)[0], np.nonzero(thin)[0]
+    assert wide.sum() > 2.2 * thin.sum(), (wide.sum(), thin.sum())
+    assert ys_w.max() - ys_w.min() + 1 >= 8 and ys_t.max() - ys_t.min() + 1 <= 4
