@@ -46,13 +46,12 @@ void VtkRecorderGuard::check(Scene& scene)
 	for (const auto& e : scene.engines)
 		now.push_back(e.get());
 	if (now == seen) return;
-	seen = now;
 	bool blocks = false, looked = false;
 	for (size_t k = 0; k < scene.engines.size(); k++) {
 		Engine* e = scene.engines[k].get();
 		if (!e || e->dead || e->getClassName() != "VTKRecorder") continue;
 		if (!looked) blocks = hasBlocks(scene), looked = true;
-		if (!blocks) return;
+		if (!blocks) return; // checked again at the next step: blocks may come later
 		std::string bad;
 		for (const std::string& r : recordersOf(*e))
 			if (unsafeRecorder(r)) bad += (bad.empty() ? "'" : ", '") + r + "'";
@@ -64,6 +63,7 @@ void VtkRecorderGuard::check(Scene& scene)
 		             "VTKRecorder to the safe recorders (e.g. 'velocity', 'ids', 'mass', 'coordNumber')."
 		          << std::endl;
 	}
+	seen = now;
 }
 
 } // namespace yade
