@@ -11,7 +11,7 @@ PACKAGES=(
   python3-pytest python3-numpy python3-matplotlib python3-vtk9   # Python tests, post-processing
   valgrind                              # benchmarks: instruction counts (callgrind; scripts/benchmarks/)
   libgl-dev                             # the qt view's functors (Gl1_*) draw with OpenGL
-  xvfb xauth python3-pil                # GUI tests (tests/gui): a virtual X display for yade's qt view, PNG pixels
+  xvfb python3-pil                      # GUI tests (tests/gui, scripts/run_in_qt_view.py): virtual X display, PNG pixels
 )
 
 if [ "$(id -u)" -eq 0 ]; then
