@@ -12,6 +12,8 @@ PACKAGES=(
   python3-ezdxf                         # yade_rbsm.io: DXF import and export
   dpkg-dev                              # the Debian package: dpkg-shlibdeps (cpack DEB), dpkg-deb
   valgrind                              # benchmarks: instruction counts (callgrind; scripts/benchmarks/)
+  libgl-dev                             # the qt view's functors (Gl1_*) draw with OpenGL
+  xvfb python3-pil                      # GUI tests (tests/gui, scripts/run_in_qt_view.py): virtual X display, PNG pixels
 )
 
 if [ "$(id -u)" -eq 0 ]; then

@@ -53,6 +53,7 @@ public:
 		((bool, lost, false, (Attr::readonly | Attr::noSave), "The blocks of this joint no longer face each other within reach (the facing edge clipped away, or separated beyond what intact springs can hold): the law breaks every point and removes the joint.")),
 		/*ctor*/ createIndex();,
 		/*py*/ .def("point", &RbsmGeom::point, "World position of integration point k [m].")
+		.add_property("contactPoint", &RbsmGeom::contactPoint, "Middle of the contact segment, (p0 + p1)/2 at z = 0 [m]: the contact point of YADE's sphere contacts (ScGeom.contactPoint), so that YADE's tools reading it (export.VTKExporter.exportContactPoints) work on joints.")
 		.add_property("tangent", &RbsmGeom::tangent, "Unit tangent t = (-n.y, n.x) of the contact line (p0→p1 runs along it).")
 		.add_property("positions", &RbsmGeom::pyPositions, "Parametric positions s_k in [0, 1] of the integration points along p0→p1.")
 		.add_property("weights", &RbsmGeom::pyWeights, "Integration weights w_k (sum 1); the tributary area of point k is w_k·ℓ·thickness.")
@@ -65,6 +66,7 @@ public:
 	// The attributes are ordered by use: what the geometry functor writes and the law reads at every
 	// step is contiguous (fewer cache lines per contact), the saved-only frozenState first.
 	Vector2r tangent() const { return Vector2r(-normal.y(), normal.x()); }
+	Vector3r contactPoint() const { return Vector3r(0.5 * (p0.x() + p1.x()), 0.5 * (p0.y() + p1.y()), 0); }
 	/// The rule of the nIP points (shared, static; null while nIP = 0).
 	const rbsm::IntegrationRule* rule = nullptr;
 	void                         setIntegrationPoints(int n)

@@ -334,6 +334,9 @@ Real RbsmTimeStepper::limit()
 
 void RbsmTimeStepper::action()
 {
+	// in every step: the one serial place of an RBSM step that sees a VTKRecorder added to O.engines
+	// (first: also in a step that a bad block below ends early, since the recorder would still run)
+	vtkRecorderGuard.check(*scene);
 	// Per-body pass (issue 15), every step, on this thread: a reshaped block gets the mass of its new
 	// shape (ReshapedBlocks.hpp); a block whose state the model cannot integrate is reported by id
 	// and the run stops after this step (BlockStateCheck.hpp), without the estimate below, which

@@ -1,6 +1,7 @@
 // RbsmTimeStepper: the stability limit of the explicit integration of an RBSM block system.
 #pragma once
 #include <core/GlobalEngine.hpp>
+#include <pkg/rbsm/VtkRecorderGuard.hpp>
 #include <pkg/rbsm/kernel/CriticalTimeStep.hpp>
 
 namespace yade {
@@ -12,6 +13,8 @@ public:
 	void action() override;
 	//! Checks the attributes when they are set (raises ValueError in Python, before any step).
 	void postLoad(RbsmTimeStepper&);
+	//! Switches off a VTKRecorder whose recorders would crash YADE on RBSM joints (see VtkRecorderGuard).
+	VtkRecorderGuard vtkRecorderGuard;
 	//! Critical time step of the present joints [s] (+inf if no RBSM joint exists yet).
 	Real estimate();
 	// clang-format off
@@ -37,7 +40,10 @@ public:
 		"with setDt the step is also kept short enough for every block to move by at most half that (never below a tenth of "
 		"the stable step, so that an explosion is reported, not run in slow motion).\n\n"
 		"Place it after :yref:`InteractionLoop` and before :yref:`NewtonIntegrator`, so that the joints of this step are "
-		"known before the integration.",
+		"known before the integration.\n\n"
+		"At every step it also switches off (dead) a :yref:`VTKRecorder` whose recorders (intr, stress, bstresses, all, ...) "
+		"would read the RBSM joints as sphere contacts and crash YADE, and says so (yade_rbsm.vtkexport.recorder records blocks "
+		"and joints instead).",
 		((Real, safetyFactor, 0.8, Attr::triggerPostLoad, "Fraction of the stable step allowed (0 < safetyFactor ≤ 1)."))
 		((bool, setDt, false, , "Set O.dt to the stable step (True) or only check it and refuse a larger O.dt (False)."))
 		((int, interval, 100, Attr::triggerPostLoad, "Full estimate every this many steps (the first step always has one); joints made in between are added at once. One full estimate costs about one InteractionLoop pass of the exact geometry (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))

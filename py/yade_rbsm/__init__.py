@@ -13,4 +13,6 @@ else:
     from .scene import engines, critical_time_step  # noqa: F401
 
 # submodules (import them explicitly): slope, safety, snapshots, limit_equilibrium, vtkexport (VTK
-# output), monitor (yade.plot series, progress line), strength_reduction (FS by strength reduction)
+# output, recorder() engine), measure (stress and fabric tensors, extrema: YADE's sphere-only utilities
+# for blocks), textexport (blocks to and from text), gui (qt view, snapshots), monitor (yade.plot
+# series, progress line), strength_reduction (FS by strength reduction)

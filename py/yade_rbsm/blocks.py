@@ -98,6 +98,7 @@ def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=F
     b.shape = shape
     b.material = mat
     b.state.pos = (cx, cy, 0)
+    b.state.refPos = b.state.pos  # displacements (Monitor, VtkSeries, snapshots, qt view) count from here
     mass = mat.density * shape.area * thickness
     inertia = mat.density * thickness * shape.polarMoment
     b.state.mass = mass

@@ -9,7 +9,8 @@ series ParaView opens (File > Open the ``.pvd``).
   ``refPos``/``refOri``) and ``velocity`` (v + ω × r) [m, m/s], ``id`` (body id of the vertex).
   Cell data: ``id`` (body id), ``displacement`` (of the centroid), ``displacementMagnitude``,
   ``velocity`` (of the centroid), ``angularVelocity`` (ω_z, rad/s), ``rotation`` (rad, since the
-  reference orientation), ``fixed`` (1 for foundation/walls), ``mass``.
+  reference orientation), ``fixed`` (1 for foundation/walls), ``mass``, ``stress`` (the block's
+  average stress tensor from its joints' forces, tension positive, 9 components: measure.block_stresses).
 * ``<prefix>_contacts_NNNN.vtp``: one line cell ``p0``–``p1`` per real RBSM joint. Cell data:
   ``id1``, ``id2``, ``normalForce`` (N, > 0 compression), ``shearForce`` (N, along the tangent, on
   body 2), ``strength`` (N), ``nIntact``, ``nSlipping``, ``nOpen`` (integration-point counts),
@@ -20,12 +21,16 @@ series ParaView opens (File > Open the ``.pvd``).
 and rewrites ``<prefix>_blocks.pvd`` and ``<prefix>_contacts.pvd`` (VTK collection files listing
 every snapshot with its time ``O.time``), so that the collection is valid after every snapshot,
 also if the run is stopped.
+
+:func:`recorder` gives the engine that YADE's ``VTKRecorder`` would be for spheres: a PyRunner for
+``O.engines`` writing such a series every N steps (YADE's VTKRecorder writes no Polygon2D block, and
+its contact and stress recorders would crash on RBSM joints).
 """
 import math
 import os
 import xml.etree.ElementTree as ET
 
-__all__ = ["VtkSeries", "blocks_polydata", "contacts_polydata", "write_pvd", "write_vtp"]
+__all__ = ["VtkSeries", "recorder", "blocks_polydata", "contacts_polydata", "write_pvd", "write_vtp"]
 
 
 def _vtk():
@@ -68,6 +73,9 @@ def blocks_polydata(O=None):
     c_rot = _array(vtkDoubleArray, "rotation")
     c_fix = _array(vtkIntArray, "fixed")
     c_mass = _array(vtkDoubleArray, "mass")
+    c_stress = _array(vtkDoubleArray, "stress", 9)
+    from .measure import block_stresses
+    stresses = block_stresses(O)
     for b in O.bodies:
         if b is None or type(b.shape).__name__ != "Polygon2D":
             continue
@@ -95,13 +103,15 @@ def blocks_polydata(O=None):
         c_rot.InsertNextValue(_rot2(ori) - _rot2(rori))
         c_fix.InsertNextValue(1 if st.blockedDOFs == "xyzXYZ" else 0)
         c_mass.InsertNextValue(st.mass)
+        sg = stresses[b.id]
+        c_stress.InsertNextTuple([sg[i, j] for i in range(3) for j in range(3)])
     pd = vtkPolyData()
     pd.SetPoints(pts)
     pd.SetPolys(polys)
     for a in (p_disp, p_vel, p_id):
         pd.GetPointData().AddArray(a)
     pd.GetPointData().SetActiveVectors("displacement")
-    for a in (c_id, c_disp, c_dmag, c_vel, c_om, c_rot, c_fix, c_mass):
+    for a in (c_id, c_disp, c_dmag, c_vel, c_om, c_rot, c_fix, c_mass, c_stress):
         pd.GetCellData().AddArray(a)
     pd.GetCellData().SetActiveScalars("displacementMagnitude")
     return pd
@@ -212,3 +222,32 @@ class VtkSeries:
             out.append(os.path.join(self.out_dir, name))
         self.files += out
         return out
+
+
+_recorders = {}  # the series of the recorder() engines, by number (a PyRunner's command is a string)
+
+
+def recorder(out_dir, prefix="rbsm", iterPeriod=0, virtPeriod=0.0, realPeriod=0.0, contacts=True, binary=True, label=""):
+    """A PyRunner for ``O.engines`` that writes a :class:`VtkSeries` snapshot (blocks with their
+    stresses, joints) every *iterPeriod* steps, *virtPeriod* s of simulated or *realPeriod* s of wall
+    time: the RBSM counterpart of YADE's ``VTKRecorder``. ``vtkexport.series_of(engine)`` gives its
+    VtkSeries (files written, .pvd paths)::
+
+        O.engines = O.engines + [vtkexport.recorder("out/vtk", "slope", iterPeriod=500)]
+    """
+    from yade import wrapper
+    if not (iterPeriod > 0 or virtPeriod > 0 or realPeriod > 0):
+        raise ValueError("vtkexport.recorder: give iterPeriod, virtPeriod or realPeriod > 0")
+    key = len(_recorders)
+    _recorders[key] = VtkSeries(out_dir, prefix, contacts, binary)
+    return wrapper.PyRunner(command="import yade_rbsm.vtkexport as _v; _v._recorders[%d].write()" % key, iterPeriod=int(iterPeriod),
+                            virtPeriod=float(virtPeriod), realPeriod=float(realPeriod), label=label or "vtkRecorder%d" % key)
+
+
+def series_of(engine):
+    """The VtkSeries that a recorder() engine writes (its files, pvd paths)."""
+    import re
+    m = re.search(r"_recorders\[(\d+)\]", engine.command)
+    if not m:
+        raise ValueError("vtkexport.series_of: not an engine made by vtkexport.recorder()")
+    return _recorders[int(m.group(1))]

@@ -22,6 +22,7 @@
 #include <lib/factory/Factorable.hpp>
 #include <lib/multimethods/Indexable.hpp>
 #include <lib/serialization/Serializable.hpp>
+#include <pkg/common/GLDrawFunctors.hpp>
 
 #include <cstdio>
 
@@ -54,5 +55,8 @@ int main()
 	SIZE(IPhysFunctor)
 	SIZE(LawFunctor)
 	SIZE(TimingDeltas)
+	SIZE(GlShapeFunctor)
+	SIZE(GlIGeomFunctor)
+	SIZE(GlIPhysFunctor)
 	return 0;
 }

@@ -11,6 +11,7 @@
 #define TYPELIST_2(T1, T2) ::boost::mpl::vector<T1, T2>
 #define TYPELIST_3(T1, T2, T3) ::boost::mpl::vector<T1, T2, T3>
 #define TYPELIST_4(T1, T2, T3, T4) ::boost::mpl::vector<T1, T2, T3, T4>
+#define TYPELIST_5(T1, T2, T3, T4, T5) ::boost::mpl::vector<T1, T2, T3, T4, T5>
 #define TYPELIST_7(T1, T2, T3, T4, T5, T6, T7) ::boost::mpl::vector<T1, T2, T3, T4, T5, T6, T7>
 
 namespace yade {

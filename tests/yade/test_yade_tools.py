@@ -1,0 +1,164 @@
+"""YADE's own tools on an RBSM scene: nothing may crash the process or return garbage silently.
+
+VTKRecorder's contact recorders read every contact as a sphere contact (static casts in YADE) and
+crashed YADE (segfault) on RBSM joints: RbsmTimeStepper now switches such a recorder off and says
+so. Other tools work on blocks through what the plugin exposes (RbsmGeom.contactPoint), or are
+replaced by yade_rbsm.measure (stress and fabric tensors, extrema).
+"""
+import pytest
+
+from yaderun import results, run_ok, run_yade
+
+STACK = """
+from yade_rbsm import polygon2d, engines
+rock = RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5)
+O.materials.append(rock)
+O.bodies.append(polygon2d([(-3, -1), (3, -1), (3, 0), (-3, 0)], rock, fixed=True))
+O.bodies.append(polygon2d([(-1, 0), (1, 0), (1, 1.5), (-1, 1.5)], rock))
+O.engines = engines(gravity=(0, -9.81, 0))
+"""
+
+
+@pytest.mark.parametrize("recorders", [["intr"], ["stress"], ["all"], ["bstresses"], ["velocity", "intr"]])
+def test_vtkrecorder_with_contact_recorders_is_switched_off_not_crashing(recorders, tmp_path):
+    p = run_yade(STACK + """
+O.engines = O.engines + [VTKRecorder(fileName=%r, recorders=%r, iterPeriod=1)]
+O.run(5, True)
+report(dead=O.engines[-1].dead, iter=O.iter)
+""" % (str(tmp_path / "r-"), recorders), workdir=str(tmp_path))
+    assert p.returncode == 0, "yade exited with %d (crash)\n%s" % (p.returncode, p.stderr[-3000:])
+    assert results(p) == [{"dead": True, "iter": 5}]
+    assert "VTKRecorder (O.engines[5]) with recorders" in p.stderr and "switched off" in p.stderr
+
+
+def test_vtkrecorder_safe_recorders_keep_running(tmp_path):
+    r = run_ok(STACK + """
+O.engines = O.engines + [VTKRecorder(fileName=%r, recorders=['velocity', 'ids', 'coordNumber'], iterPeriod=2)]
+O.run(5, True)
+report(dead=O.engines[-1].dead)
+""" % str(tmp_path / "r-"), workdir=str(tmp_path))
+    assert r == [{"dead": False}]
+
+
+# A column of three 2 m x 1 m blocks (density 2000, thickness 1) on a fixed base, a force P pushing the
+# top block down (at its centroid, like its weight W = rho g w h t), at rest. A block whose top face
+# carries F_top and bottom face F_bottom = F_top + W (+ P for the top block) has the average stress
+# sigma_yy = -(F_top + F_bottom) / (2 w t) (the joints' forces at +-h/2 from its centroid over its
+# volume w h t), sigma_xx = sigma_xy = 0.
+COLUMN = """
+from yade_rbsm import polygon2d, engines, measure
+rho, g, P = 2000.0, 9.81, 5.0e4
+rock = RbsmMat(young=1e8, poisson=0.2, density=rho, frictionAngle=0.5)
+O.materials.append(rock)
+O.bodies.append(polygon2d([(-3, -1), (3, -1), (3, 0), (-3, 0)], rock, fixed=True))
+for k in range(3):
+    O.bodies.append(polygon2d([(-1, k), (1, k), (1, k + 1), (-1, k + 1)], rock))
+O.engines = engines(gravity=(0, -g, 0), damping=0.8)
+O.forces.setPermF(3, (0, -P, 0))
+O.run(4000, True)
+"""
+
+
+def test_block_stresses_and_packing_stress_of_a_loaded_column():
+    r = run_ok(COLUMN + """
+bs = measure.block_stresses()
+s = measure.stress()
+report(blocks={i: [[bs[i][a, b] for b in range(3)] for a in range(3)] for i in (1, 2, 3)},
+       packing=[[s[a, b] for b in range(3)] for a in range(3)], vel=max(O.bodies[i].state.vel.norm() for i in (1, 2, 3)),
+       base=[[bs[0][a, b] for b in range(3)] for a in range(3)])
+""")[0]
+    rho, g, P, w, h = 2000.0, 9.81, 5.0e4, 2.0, 1.0
+    W = rho * g * w * h
+    assert r["vel"] < 1e-4
+    top = {3: 0.0, 2: P + W, 1: P + 2 * W}  # force on the top face of block i
+    expected = {i: -(2 * top[i] + W + (P if i == 3 else 0)) / (2 * w) for i in (1, 2, 3)}
+    for i in (1, 2, 3):
+        s = r["blocks"][str(i)]
+        assert s[1][1] == pytest.approx(expected[i], rel=2e-3), (i, s)
+        assert abs(s[0][0]) < 1e-3 * abs(s[1][1]) and abs(s[0][1]) < 1e-3 * abs(s[1][1]) and abs(s[1][0]) < 1e-3 * abs(s[1][1])
+        assert s[2] == [0, 0, 0]
+    # the column as a whole: the volume average of its three equal blocks
+    assert r["packing"][1][1] == pytest.approx(sum(expected.values()) / 3, rel=2e-3)
+    # the fixed base carries the whole column: P + 3W over its 6 m x 1 m
+    assert r["base"][1][1] == pytest.approx(-(P + 3 * W) * 0.5 / 6.0, rel=2e-3)
+
+
+def test_fabric_extrema_porosity_of_the_column():
+    r = run_ok(COLUMN + """
+F, Fw = measure.fabric_tensor(), measure.fabric_tensor(weighted=True)
+lo, hi = measure.aabb_extrema()
+report(F=[[F[a, b] for b in range(3)] for a in range(3)], Fw=[[Fw[a, b] for b in range(3)] for a in range(3)],
+       lo=list(lo), hi=list(hi), n=measure.porosity(), n2=measure.porosity(area=20.0, ids=[1, 2, 3]))
+""")[0]
+    # every joint of the column is horizontal: n = (0, +-1)
+    assert r["F"] == [[pytest.approx(0, abs=1e-9), pytest.approx(0, abs=1e-9), 0], [pytest.approx(0, abs=1e-9), pytest.approx(1), 0], [0, 0, 0]]
+    assert r["Fw"][1][1] == pytest.approx(1)
+    assert r["lo"] == pytest.approx([-3, -1, -0.5], abs=5e-3) and r["hi"] == pytest.approx([3, 3, 0.5], abs=5e-3)  # (joint overlaps: mm)
+    assert r["n"] == pytest.approx(1 - 12 / 24, abs=2e-3)  # base 6 + three blocks 2, box 6 x 4
+    assert r["n2"] == pytest.approx(1 - 6 / 20)
+
+
+def test_vtkexporter_contact_points_at_the_middle_of_the_joint(tmp_path):
+    """YADE's export.VTKExporter.exportContactPoints reads i.geom.contactPoint (RbsmGeom has it, z = 0)."""
+    r = run_ok(STACK + """
+O.run(3, True)
+from yade import export
+vtk = export.VTKExporter(%r)
+vtk.exportContactPoints(what={'fn': 'i.phys.normalForce'})
+g = O.interactions[0, 1].geom
+report(cp=list(g.contactPoint), mid=[0.5 * (g.p0[0] + g.p1[0]), 0.5 * (g.p0[1] + g.p1[1]), 0.0], fn=O.interactions[0, 1].phys.normalForce)
+""" % str(tmp_path / "e"), workdir=str(tmp_path))[0]
+    assert r["cp"] == pytest.approx(r["mid"], abs=1e-12)
+    text = (tmp_path / "e-cps-00000000.vtk").read_text().split("\n")
+    assert text[5] == "POINTS 1 double"
+    assert [float(v) for v in text[6].split()] == pytest.approx(r["cp"], abs=1e-5)
+    assert float(text[text.index("LOOKUP_TABLE default") + 1]) == pytest.approx(r["fn"], rel=1e-5)
+
+
+def test_polygon2d_reference_position_is_where_the_block_is_made():
+    """Displacements (pos - refPos: qt view, Monitor, VtkSeries, snapshots) start at 0 in a user's scene."""
+    r = run_ok(STACK + """
+report(ref=[list(b.state.refPos) for b in O.bodies], pos=[list(b.state.pos) for b in O.bodies])
+""")[0]
+    assert r["ref"] == r["pos"] and r["pos"][1] == pytest.approx([0, 0.75, 0])
+
+
+def test_vtk_recorder_engine_writes_blocks_joints_and_stresses(tmp_path):
+    """yade_rbsm.vtkexport.recorder: the VTKRecorder of RBSM scenes, from O.engines."""
+    r = run_ok(COLUMN + """
+from yade_rbsm import vtkexport, measure
+rec = vtkexport.recorder(%r, 'col', iterPeriod=10)
+O.engines = O.engines + [rec]
+O.run(25, True)
+s = vtkexport.series_of(rec)
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+rd = vtkXMLPolyDataReader(); rd.SetFileName(s.files[-2]); rd.Update()
+pd = rd.GetOutput(); cd = pd.GetCellData()
+ids = [cd.GetArray('id').GetValue(k) for k in range(pd.GetNumberOfCells())]
+k = ids.index(2)
+report(files=[f.rsplit('/', 1)[1] for f in s.files], n=pd.GetNumberOfCells(), syy=cd.GetArray('stress').GetTuple9(k)[4],
+       expect=measure.block_stresses()[2][1, 1])
+""" % str(tmp_path))[0]
+    assert r["files"] == ["col_blocks_0000.vtp", "col_contacts_0000.vtp", "col_blocks_0001.vtp", "col_contacts_0001.vtp",
+                          "col_blocks_0002.vtp", "col_contacts_0002.vtp"]
+    assert r["n"] == 4 and r["syy"] == pytest.approx(r["expect"], rel=1e-9) and r["syy"] < 0
+
+
+def test_text_export_of_blocks_and_back(tmp_path):
+    """yade_rbsm.textexport.text / read: what YADE's export.text does for spheres (it writes only a header for blocks)."""
+    r = run_ok(STACK + """
+O.bodies[1].state.ori = Quaternion((0, 0, 1), 0.3)
+from yade_rbsm import textexport
+from yade import export
+n = textexport.text(%r, comment='two blocks')
+back = textexport.read(%r)
+yade_lines = export.text(%r)
+report(n=n, back=[[i, [list(v) for v in vs], t] for i, vs, t in back],
+       world=[[list(v) for v in b.shape.worldVertices(b.state.pos, b.state.ori)] for b in O.bodies], yade=yade_lines)
+""" % ((str(tmp_path / "b.txt"),) * 2 + (str(tmp_path / "y.txt"),)))[0]
+    assert r["n"] == 2 and r["yade"] == 0
+    assert [b[0] for b in r["back"]] == [0, 1]
+    for (i, verts, t), world in zip(r["back"], r["world"]):
+        assert sum(verts, []) == pytest.approx(sum(world, []), abs=1e-15) and t == 1.0
+    line = (tmp_path / "b.txt").read_text().split("\n")[3].split()
+    assert float(line[3]) == pytest.approx(0.3)
