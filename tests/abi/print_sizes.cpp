@@ -22,6 +22,14 @@
 #include <lib/factory/Factorable.hpp>
 #include <lib/multimethods/Indexable.hpp>
 #include <lib/serialization/Serializable.hpp>
+#include <pkg/common/ElastMat.hpp>
+#include <pkg/common/Facet.hpp>
+#include <pkg/common/NormShearPhys.hpp>
+#include <pkg/common/Sphere.hpp>
+#include <pkg/common/Wall.hpp>
+#include <pkg/dem/DemXDofGeom.hpp>
+#include <pkg/dem/FrictPhys.hpp>
+#include <pkg/dem/ScGeom.hpp>
 
 #include <cstdio>
 
@@ -54,5 +62,16 @@ int main()
 	SIZE(IPhysFunctor)
 	SIZE(LawFunctor)
 	SIZE(TimingDeltas)
+	// YADE's DEM classes that mixed scenes (Polygon2D with spheres, walls, facets) meet
+	SIZE(Sphere)
+	SIZE(Wall)
+	SIZE(Facet)
+	SIZE(ElastMat)
+	SIZE(FrictMat)
+	SIZE(NormPhys)
+	SIZE(NormShearPhys)
+	SIZE(FrictPhys)
+	SIZE(GenericSpheresContact)
+	SIZE(ScGeom)
 	return 0;
 }
