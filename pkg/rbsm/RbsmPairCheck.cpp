@@ -10,12 +10,35 @@ namespace yade {
 
 YADE_PLUGIN((RbsmPairCheck));
 
+namespace {
+	// yade_rbsm.dispatch.phys_functor_missing(id1, id2), with Python's lock (this engine runs outside the OpenMP
+	// loops, like YADE's PyRunner); a Python error is printed and counts as no problem found.
+	std::string physFunctorMissing(int id1, int id2)
+	{
+		namespace py              = boost::python;
+		const PyGILState_STATE gil = PyGILState_Ensure();
+		std::string            missing;
+		try {
+			missing = py::extract<std::string>(py::import("yade_rbsm.dispatch").attr("phys_functor_missing")(id1, id2));
+		} catch (const py::error_already_set&) {
+			PyErr_Print();
+		}
+		PyGILState_Release(gil);
+		return missing;
+	}
+}
+
 void RbsmPairCheck::action()
 {
 	const auto& bodies = scene->bodies->body;
 	for (const auto& I : *scene->interactions) {
+		if (I->isReal()) continue;
+		// a geometry functor exists (InteractionLoop cached it): is there an IPhys functor for the materials?
+		if (I->functorCache.geomExists) {
+			if (I->functorCache.geom) checkPhys(*I);
+			continue;
+		}
 		// InteractionLoop marks a pair for which its geometry dispatcher found no functor
-		if (I->functorCache.geomExists || I->isReal()) continue;
 		const int id1 = I->getId1(), id2 = I->getId2();
 		if (id1 < 0 || id2 < 0 || size_t(std::max(id1, id2)) >= bodies.size()) continue;
 		const Body *b1 = bodies[id1].get(), *b2 = bodies[id2].get();
@@ -34,6 +57,32 @@ void RbsmPairCheck::action()
 		                     + "\n";
 		if (stopRun) rbsm_report::stopAfterThisStep(*scene);
 	}
+}
+
+} // namespace yade
+
+namespace yade {
+
+void RbsmPairCheck::checkPhys(const Interaction& I)
+{
+	const auto& bodies = scene->bodies->body;
+	const int   id1 = I.getId1(), id2 = I.getId2();
+	if (id1 < 0 || id2 < 0 || size_t(std::max(id1, id2)) >= bodies.size()) return;
+	const Body *b1 = bodies[id1].get(), *b2 = bodies[id2].get();
+	if (!b1 || !b2 || !b1->shape || !b2->shape || !b1->material || !b2->material) return;
+	if (!dynamic_cast<const Polygon2D*>(b1->shape.get()) && !dynamic_cast<const Polygon2D*>(b2->shape.get())) return;
+	const std::string key = b1->material->getClassName() + " " + b2->material->getClassName();
+	auto              it  = physChecked.find(key);
+	if (it == physChecked.end()) it = physChecked.emplace(key, physFunctorMissing(id1, id2).empty()).first;
+	if (it->second || std::find(reported.begin(), reported.end(), key) != reported.end()) return;
+	reported.push_back(key);
+	std::cerr << "yade-rbsm: ERROR: RbsmPairCheck: bodies #" + std::to_string(id1) + " (" + b1->shape->getClassName() + ", "
+	                     + b1->material->getClassName() + ") and #" + std::to_string(id2) + " (" + b2->shape->getClassName() + ", "
+	                     + b2->material->getClassName() + ") are about to touch, but no IPhysFunctor of the InteractionLoop handles "
+	                     + b1->material->getClassName() + " and " + b2->material->getClassName() + " (Ip2_" + b1->material->getClassName() + "_"
+	                     + b2->material->getClassName() + "_... is missing): YADE would end the process at their contact; the run stops after step "
+	                     + std::to_string(scene->iter) + "\n";
+	rbsm_report::stopAfterThisStep(*scene);
 }
 
 } // namespace yade

@@ -1,6 +1,9 @@
 // RbsmPairCheck: reports pairs of bodies with a block that the InteractionLoop has no geometry functor for.
 #pragma once
 #include <core/GlobalEngine.hpp>
+#include <core/Interaction.hpp>
+
+#include <map>
 
 namespace yade {
 
@@ -15,13 +18,20 @@ public:
 		"yade_rbsm.engines() and mixed_engines()) looks for such pairs after every step and reports each pair of shape "
 		"classes once, naming the bodies and the functor that is missing; with :yref:`stopRun<RbsmPairCheck.stopRun>` the "
 		"run stops after that step. Only pairs with a bound on both bodies are seen: a shape without a bound functor in "
-		"the collider collides with nothing.",
+		"the collider collides with nothing.\n\n"
+		"A pair with a block that is about to touch (bounds overlap, a geometry functor exists) whose materials have no "
+		":yref:`IPhysFunctor` in the loop would end the process at their first contact (YADE throws inside its OpenMP "
+		"loop); it is reported the same way (asked once per material pair, through yade_rbsm.dispatch) and the run always "
+		"stops after the step. A pair that touches in the step it first overlaps is not seen in time.",
 		((bool, stopRun, true, , "Stop the run after the step in which a pair is found (True), or only report it (False)."))
-		((std::vector<std::string>, reported, , Attr::readonly, "The shape pairs reported so far, as 'Polygon2D Box' (each once).")),
+		((std::vector<std::string>, reported, , Attr::readonly, "The shape pairs reported so far, as 'Polygon2D Box', and the material pairs without IPhys functor, as 'RbsmMat FrictMat' (each once).")),
 		/*ctor*/,
 		/*py*/
 	);
 	// clang-format on
+private:
+	void                        checkPhys(const Interaction& I);
+	std::map<std::string, bool> physChecked; // material pair "A B" -> an IPhys functor exists (not saved: asked again after a load)
 };
 REGISTER_SERIALIZABLE(RbsmPairCheck);
 

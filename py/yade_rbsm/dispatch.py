@@ -28,3 +28,15 @@ def check_materials(bodies=None):
         raise ValueError("spheres of RbsmMat and of FrictMat in one scene with blocks: YADE's IPhys dispatch meets the two "
                          "materials of two spheres in either order and ends the process (Debian's build asserts it); give "
                          "the spheres one material class")
+
+
+def phys_functor_missing(id1, id2):
+    """"" if every InteractionLoop in O.engines has an IPhys functor for the materials of bodies id1 and id2,
+    otherwise the two material class names as "A B" (RbsmPairCheck asks this, once per material pair, for the
+    pairs with a block that are about to touch: YADE's loop ends the process at a contact without one)."""
+    from yade import O
+    m1, m2 = O.bodies[id1].material, O.bodies[id2].material
+    for e in O.engines:
+        if isinstance(e, wrapper.InteractionLoop) and not e.dead and e.physDispatcher.dispFunctor(m1, m2) is None:
+            return "%s %s" % (type(m1).__name__, type(m2).__name__)
+    return ""
