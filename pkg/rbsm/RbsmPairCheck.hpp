@@ -30,8 +30,9 @@ public:
 	);
 	// clang-format on
 private:
-	void                        checkPhys(const Interaction& I);
-	std::map<std::string, bool> physChecked; // material pair "A B" -> an IPhys functor exists (not saved: asked again after a load)
+	void                                checkPhys(const Interaction& I);
+	std::map<std::pair<int, int>, bool> physChecked;
+	long                                lastIter = -2; // step of the last call (not saved: after a load every pair is checked again) // material class indices -> an IPhys functor exists (not saved: asked again after a load)
 };
 REGISTER_SERIALIZABLE(RbsmPairCheck);
 
