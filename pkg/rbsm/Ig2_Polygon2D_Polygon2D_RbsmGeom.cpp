@@ -1,5 +1,6 @@
 #include <pkg/rbsm/Ig2_Polygon2D_Polygon2D_RbsmGeom.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
+#include <pkg/rbsm/MixedMaterials.hpp>
 #include <pkg/rbsm/StepReport.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
@@ -61,7 +62,7 @@ namespace {
 
 	// Periodic cells are not supported: reported (StepReport.hpp) and the run stopped at the end of
 	// this step, so that no step runs with the contacts across the cell's boundary missing.
-	std::atomic<int> periodicReports { 0 };
+	std::atomic<int> periodicReports { 0 }, materialReports { 0 };
 	void             reportPeriodic(const Interaction& I, Scene& scene)
 	{
 		rbsm_report::stopForPair(periodicReports, scene, "Ig2_Polygon2D_Polygon2D_RbsmGeom", I.getId1(), I.getId2(),
@@ -180,6 +181,10 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 			c                          = rbsm::edgeContact(va, vb, maxSeparation, g ? &hint : nullptr, hysteresis, minSize, &poseA, &poseB, &memory);
 			if (!g) {
 				if (!(c.touching && c.length > 0)) return false; // no new contact
+				// blocks of another material would meet an IPhys dispatch without functor (an abort)
+				if (!rbsm_mixed::materialsAccepted(materialReports, *scene, "Ig2_Polygon2D_Polygon2D_RbsmGeom", *I, rbsm_mixed::Role::Block,
+				                                   rbsm_mixed::Role::Block))
+					return false;
 				auto geom = shared_ptr<RbsmGeom>(new RbsmGeom);
 				geom->setIntegrationPoints(nIP);
 				geom->thickness    = std::min(A.thickness, B.thickness);

@@ -2,6 +2,7 @@
 #include <pkg/rbsm/RbsmGeom.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
 
+#include <pkg/rbsm/MixedPhys.hpp>
 #include <pkg/rbsm/StepReport.hpp>
 
 #include <algorithm>
@@ -19,6 +20,12 @@ namespace {
 		rbsm_report::stopForPair(mixedReports, scene, "Ip2_RbsmMat_RbsmMat_RbsmPhys", I.getId1(), I.getId2(),
 		                         "mix plane strain and plane stress materials (RbsmMat.planeStrain)");
 	}
+	std::atomic<int> geomReports { 0 };
+	void             reportUnknownGeometry(const Interaction& I, Scene& scene)
+	{
+		rbsm_report::stopForPair(geomReports, scene, "Ip2_RbsmMat_RbsmMat_RbsmPhys", I.getId1(), I.getId2(),
+		                         ("have a " + I.geom->getClassName() + " contact, which it cannot give properties (only RbsmGeom and ScGeom)").c_str());
+	}
 }
 
 void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shared_ptr<Material>& b2, const shared_ptr<Interaction>& I)
@@ -26,7 +33,16 @@ void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shar
 	if (I->phys) return; // properties are set once, when the joint forms
 	jointsMade.fetch_add(1, std::memory_order_relaxed);
 	const auto* g = dynamic_cast<const RbsmGeom*>(I->geom.get());
-	if (!g) throw std::runtime_error("Ip2_RbsmMat_RbsmMat_RbsmPhys: the interaction has no RbsmGeom (use Ig2_Polygon2D_Polygon2D_RbsmGeom)");
+	if (!g) {
+		// A point contact of YADE's sphere laws (a sphere of RbsmMat against a block, a wall or a sphere):
+		// FrictPhys, the RbsmMat read as a FrictMat (Ip2_RbsmMat_FrictMat_FrictPhys's rule). Any other
+		// geometry is reported, not thrown: this runs inside InteractionLoop's OpenMP loop.
+		Real       R1 = 1, R2 = 1;
+		const bool point = rbsm_mixed::pointContactRadii(I->geom.get(), R1, R2);
+		if (!point) reportUnknownGeometry(*I, *scene);
+		I->phys = rbsm_mixed::frictPhys(R1, R2, point ? rbsm_mixed::elasticOf(*b1) : rbsm_mixed::Elastic {}, point ? rbsm_mixed::elasticOf(*b2) : rbsm_mixed::Elastic {});
+		return;
+	}
 	const RbsmMat& m1 = static_cast<const RbsmMat&>(*b1);
 	const RbsmMat& m2 = static_cast<const RbsmMat&>(*b2);
 	if (m1.planeStrain != m2.planeStrain) {

@@ -11,6 +11,7 @@ except ImportError:
 else:
     from .blocks import polygon2d, polygon_properties  # noqa: F401
     from .scene import engines, critical_time_step  # noqa: F401
+    from .mixed import mixed_engines  # noqa: F401
 
 # submodules (import them explicitly): slope, safety, snapshots, limit_equilibrium, vtkexport (VTK
 # output, recorder() engine), measure (stress and fabric tensors, extrema: YADE's sphere-only utilities

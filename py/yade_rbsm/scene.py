@@ -17,6 +17,7 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
                         [Law2_RbsmGeom_RbsmPhys_MohrCoulomb])    # tractions, Mohr-Coulomb, tension cut-off
         RbsmTimeStepper                                          # stability limit of the explicit step
         NewtonIntegrator(gravity, damping)                       # central differences
+        RbsmPairCheck                                            # no silent pass-through
 
     *damping* is NewtonIntegrator's non-viscous (Cundall) damping, for quasi-static stages;
     *contact_damping* the viscous damping ratio of the joints; *set_dt*: the time stepper sets O.dt
@@ -27,10 +28,12 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     *verlet_dist*: the collider's verletDist [m]; by default 1 % of the smallest block already in
     O.bodies (YADE's automatic value is for spheres and becomes 0 without them, which re-sorts the
     bounds at every step: 9 % of the step of a brick wall, docs/benchmarks.md).
-    Labels: collider, ig2, ip2, law, timeStepper, newton.
+    Labels: collider, ig2, ip2, law, timeStepper, newton, pairCheck (RbsmPairCheck, last: reports blocks next to
+    shapes that no functor handles). A Polygon2D body without RbsmMat in O.bodies raises ValueError.
     Periodic cells (O.periodic) are not supported: ValueError.
     """
     from yade import O
+    from .dispatch import check_materials
     if O.periodic:
         raise ValueError("engines: O.periodic is set, and Polygon2D blocks do not support periodic cells")
     try:
@@ -46,6 +49,7 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     update_tolerance = number("engines", "update_tolerance", update_tolerance, 0, 0.1, high_open=True)
     if verlet_dist is not None:
         verlet_dist = number("engines", "verlet_dist", verlet_dist, 0)
+    check_materials()  # a block without RbsmMat: ValueError now, not an abort in the loop
     collider = wrapper.InsertionSortCollider([wrapper.Bo1_Polygon2D_Aabb(enlarge=enlarge)], label="collider")
     if verlet_dist is None:
         verlet_dist = 0.01 * _smallest_block()
@@ -61,6 +65,7 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
         ),
         wrapper.RbsmTimeStepper(safetyFactor=safety, setDt=set_dt, interval=interval, label="timeStepper"),
         wrapper.NewtonIntegrator(gravity=gravity, damping=damping, label="newton"),
+        wrapper.RbsmPairCheck(label="pairCheck"),  # blocks next to shapes no functor handles: reported, run stopped
     ]
 
 

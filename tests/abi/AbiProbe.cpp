@@ -1,4 +1,10 @@
 #include "AbiProbe.hpp"
+#include <pkg/common/ElastMat.hpp>
+#include <pkg/common/Facet.hpp>
+#include <pkg/common/Sphere.hpp>
+#include <pkg/common/Wall.hpp>
+#include <pkg/dem/FrictPhys.hpp>
+#include <pkg/dem/ScGeom.hpp>
 #include <stdexcept>
 
 namespace yade {
@@ -155,4 +161,56 @@ py::dict AbiProbe::sizes() const
 	return d;
 }
 
+} // namespace yade
+
+namespace yade {
+// The fields of YADE's DEM classes that the plugin reads or writes (pkg/common, pkg/dem declarations).
+// By class name, not dynamic_cast: the probe links to libyade.so only.
+static py::dict fieldsOf(const Serializable* o)
+{
+	py::dict d;
+	if (!o) return d;
+	const std::string c = o->getClassName();
+	if (c == "Sphere") d["radius"] = static_cast<const Sphere&>(*o).radius;
+	if (c == "Wall") {
+		const auto& w = static_cast<const Wall&>(*o);
+		d["sense"] = w.sense, d["axis"] = w.axis, d["color"] = w.color;
+	}
+	if (c == "Facet") {
+		const auto& f = static_cast<const Facet&>(*o);
+		py::list    v;
+		for (const auto& x : f.vertices) v.append(x);
+		d["vertices"] = v, d["normal"] = f.normal, d["area"] = f.area;
+	}
+	if (c == "FrictMat" || c == "ElastMat") {
+		const auto& m = static_cast<const ElastMat&>(*o);
+		d["young"] = m.young, d["poisson"] = m.poisson, d["density"] = m.density;
+		if (c == "FrictMat") d["frictionAngle"] = static_cast<const FrictMat&>(*o).frictionAngle;
+	}
+	if (c == "ScGeom") {
+		const auto& g = static_cast<const ScGeom&>(*o);
+		d["normal"] = g.normal, d["contactPoint"] = g.contactPoint, d["refR1"] = g.refR1, d["refR2"] = g.refR2;
+		d["radius1"] = g.radius1, d["radius2"] = g.radius2, d["penetrationDepth"] = g.penetrationDepth, d["shearInc"] = g.shearInc;
+	}
+	if (c == "FrictPhys") {
+		const auto& p = static_cast<const FrictPhys&>(*o);
+		d["kn"] = p.kn, d["ks"] = p.ks, d["normalForce"] = p.normalForce, d["shearForce"] = p.shearForce;
+		d["tangensOfFrictionAngle"] = p.tangensOfFrictionAngle;
+	}
+	return d;
+}
+
+py::dict AbiProbe::demFields(const shared_ptr<Serializable>& o) const { return fieldsOf(o.get()); }
+
+// Python hands a ScGeom or FrictPhys over as a Serializable wrongly (boost.python's cast chain through
+// Debian's registration), so the interaction's parts are read from the interaction.
+py::dict AbiProbe::demInteractionFields(int id1, int id2) const
+{
+	const shared_ptr<Interaction>& I = currentScene().interactions->find(id1, id2);
+	py::dict                       d;
+	if (!I) return d;
+	d["geom"] = fieldsOf(I->geom.get());
+	d["phys"] = fieldsOf(I->phys.get());
+	return d;
+}
 } // namespace yade

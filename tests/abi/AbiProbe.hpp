@@ -21,6 +21,8 @@ public:
 	boost::python::dict interactionInfo(int id1, int id2) const;
 	void                addForce(int id, const Vector3r& f, const Vector3r& t) const;
 	boost::python::dict sizes() const;
+	boost::python::dict demFields(const shared_ptr<Serializable>& object) const;
+	boost::python::dict demInteractionFields(int id1, int id2) const;
 
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(AbiProbe, GlobalEngine,
@@ -40,6 +42,8 @@ public:
 		.def("interactionInfo", &AbiProbe::interactionInfo, (boost::python::arg("id1"), boost::python::arg("id2")))
 		.def("addForce", &AbiProbe::addForce, (boost::python::arg("id"), boost::python::arg("f"), boost::python::arg("t")))
 		.def("sizes", &AbiProbe::sizes, "sizeof of some declared classes, as compiled into the probe.")
+		.def("demInteractionFields", &AbiProbe::demInteractionFields, (boost::python::arg("id1"), boost::python::arg("id2")), "demFields of the interaction's geom and phys.")
+		.def("demFields", &AbiProbe::demFields, boost::python::arg("object"), "Fields of a Sphere, Wall, Facet, FrictMat, ScGeom or FrictPhys read through the project's declarations.")
 	);
 	// clang-format on
 };

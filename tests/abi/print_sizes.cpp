@@ -23,6 +23,14 @@
 #include <lib/multimethods/Indexable.hpp>
 #include <lib/serialization/Serializable.hpp>
 #include <pkg/common/GLDrawFunctors.hpp>
+#include <pkg/common/ElastMat.hpp>
+#include <pkg/common/Facet.hpp>
+#include <pkg/common/NormShearPhys.hpp>
+#include <pkg/common/Sphere.hpp>
+#include <pkg/common/Wall.hpp>
+#include <pkg/dem/DemXDofGeom.hpp>
+#include <pkg/dem/FrictPhys.hpp>
+#include <pkg/dem/ScGeom.hpp>
 
 #include <cstdio>
 
@@ -58,5 +66,16 @@ int main()
 	SIZE(GlShapeFunctor)
 	SIZE(GlIGeomFunctor)
 	SIZE(GlIPhysFunctor)
+	// YADE's DEM classes that mixed scenes (Polygon2D with spheres, walls, facets) meet
+	SIZE(Sphere)
+	SIZE(Wall)
+	SIZE(Facet)
+	SIZE(ElastMat)
+	SIZE(FrictMat)
+	SIZE(NormPhys)
+	SIZE(NormShearPhys)
+	SIZE(FrictPhys)
+	SIZE(GenericSpheresContact)
+	SIZE(ScGeom)
 	return 0;
 }

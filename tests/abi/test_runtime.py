@@ -108,6 +108,40 @@ report(ok=True)
 """)
 
 
+def test_dem_class_fields(yade):
+    """Sphere, Wall, Facet, FrictMat, ScGeom, FrictPhys (pkg/common, pkg/dem declarations, used by the
+    mixed scenes of issue 17): every field read in C++ equals YADE's Python accessor."""
+    yade("""
+from yade import utils
+p = AbiProbe()
+mat = FrictMat(young=3.5e7, poisson=0.27, frictionAngle=0.41, density=2111)
+O.materials.append(mat)
+O.bodies.append([utils.sphere((0, 0, 0), 1, material=mat), utils.sphere((1.65, 0.1, 0), 0.8, material=mat),
+                 utils.wall((0, -3, 0), axis=1, sense=-1), utils.facet([(0, 0, 5), (2, 0, 5), (0, 3, 6)])])
+O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+             InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]), NewtonIntegrator(), p]
+O.bodies[1].state.vel = (0.3, -2, 0); O.bodies[1].state.angVel = (0, 0, 5)
+O.dt = 1e-4
+for k in range(5): O.step()
+def same(a, b):
+    if isinstance(b, (list, tuple)): return len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
+    return a == b
+checked = []
+i = O.interactions[0, 1]
+fields = [(o, p.demFields(o)) for o in [O.bodies[0].shape, O.bodies[1].shape, O.bodies[2].shape, O.bodies[3].shape, mat]]
+fields += [(i.geom, p.demInteractionFields(0, 1)['geom']), (i.phys, p.demInteractionFields(0, 1)['phys'])]
+for obj, d in fields:
+    assert d, obj
+    for k, v in d.items():
+        py = getattr(obj, {'radius1': 'refR1', 'radius2': 'refR2'}.get(k, k))  # ScGeom's references to refR1, refR2
+        assert same(v, py), (type(obj).__name__, k, v, py)
+    checked.append(type(obj).__name__)
+g = O.interactions[0, 1].geom
+assert g.shearInc.norm() > 0 and g.penetrationDepth > 0, g.dict()
+report(checked=checked)
+""")
+
+
 def test_forces_added_in_cpp_are_read_by_python(yade):
     yade("""
 from yade import utils

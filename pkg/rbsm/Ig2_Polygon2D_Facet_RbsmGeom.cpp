@@ -1,0 +1,56 @@
+#include <pkg/rbsm/Ig2_Polygon2D_Facet_RbsmGeom.hpp>
+#include <pkg/rbsm/BoundaryJoint.hpp>
+#include <pkg/rbsm/StepReport.hpp>
+#include <pkg/rbsm/kernel/BoundaryEdge.hpp>
+#include <pkg/common/Facet.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace yade {
+
+YADE_PLUGIN((Ig2_Polygon2D_Facet_RbsmGeom));
+
+void Ig2_Polygon2D_Facet_RbsmGeom::postLoad(Ig2_Polygon2D_Facet_RbsmGeom&)
+{
+	if (nIP < 1 || nIP > 8) throw std::invalid_argument("Ig2_Polygon2D_Facet_RbsmGeom.nIP: must be 1..8 (got " + std::to_string(nIP) + ")");
+	if (!(std::isfinite(interactionDistance) && interactionDistance >= 0))
+		throw std::invalid_argument("Ig2_Polygon2D_Facet_RbsmGeom.interactionDistance: must be a finite distance >= 0 (got " + std::to_string(interactionDistance) + ")");
+}
+
+namespace {
+	std::atomic<int> periodicReports { 0 };
+}
+
+bool Ig2_Polygon2D_Facet_RbsmGeom::go(
+        const shared_ptr<Shape>& s1,
+        const shared_ptr<Shape>& s2,
+        const State&             stateBlock,
+        const State&             stateBoundary,
+        const Vector3r&          shift2,
+        const bool&              /*force*/,
+        const shared_ptr<Interaction>& I)
+{
+	if (shift2 != Vector3r::Zero()) {
+		rbsm_report::stopForPair(periodicReports, *scene, "Ig2_Polygon2D_Facet_RbsmGeom", I->getId1(), I->getId2(),
+		                         "meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported");
+		return false;
+	}
+	const Polygon2D& block = static_cast<const Polygon2D&>(*s1);
+	if (block.vertices.empty() || !(block.circumradius > 0)) return false; // reported by Bo1_Polygon2D_Aabb
+	const Facet& f = static_cast<const Facet&>(*s2);
+	if (f.vertices.size() != 3) return false;
+	Eigen::Vector3d world[3];
+	for (int i = 0; i < 3; i++)
+		world[i] = stateBoundary.pos + stateBoundary.ori * f.vertices[i];
+	rbsm::Vec2 a, b;
+	if (!rbsm::planeTrace(world, stateBlock.pos.z(), a, b)) return false; // the facet does not cross the block's plane
+	// the trace's normal towards the block's centroid
+	const rbsm::Vec2 t = (b - a).normalized();
+	rbsm::Vec2       m(-t.y(), t.x());
+	if (m.dot(stateBlock.pos.head<2>() - a) < 0) m = -m;
+	const auto boundary = rbsm::boundaryRectangle(a, b, m, 2 * block.circumradius);
+	return rbsm_boundary::blockOnBoundary("Ig2_Polygon2D_Facet_RbsmGeom", nIP, interactionDistance, block, stateBlock, boundary, stateBoundary, I, *scene);
+}
+
+} // namespace yade

@@ -1,0 +1,59 @@
+#include <pkg/rbsm/Ig2_Polygon2D_Sphere_ScGeom.hpp>
+#include <pkg/rbsm/MixedMaterials.hpp>
+#include <pkg/rbsm/StepReport.hpp>
+#include <pkg/rbsm/kernel/ConvexPolygon.hpp>
+#include <pkg/rbsm/kernel/DiskContact.hpp>
+#include <lib/factory/ClassFactory.hpp>
+#include <pkg/common/Sphere.hpp>
+#include <pkg/dem/ScGeom.hpp>
+
+namespace yade {
+
+YADE_PLUGIN((Ig2_Polygon2D_Sphere_ScGeom));
+
+namespace {
+	std::atomic<int> periodicReports { 0 }, materialReports { 0 };
+}
+
+bool Ig2_Polygon2D_Sphere_ScGeom::go(
+        const shared_ptr<Shape>& s1,
+        const shared_ptr<Shape>& s2,
+        const State&             state1,
+        const State&             state2,
+        const Vector3r&          shift2,
+        const bool&              force,
+        const shared_ptr<Interaction>& I)
+{
+	if (shift2 != Vector3r::Zero()) {
+		rbsm_report::stopForPair(periodicReports, *scene, "Ig2_Polygon2D_Sphere_ScGeom", I->getId1(), I->getId2(),
+		                         "meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported");
+		return false;
+	}
+	const Polygon2D& block = static_cast<const Polygon2D&>(*s1);
+	const Real       r     = static_cast<const Sphere&>(*s2).radius;
+	if (block.vertices.empty() || block.edgeNormals.size() != block.vertices.size()) return false; // reported by Bo1_Polygon2D_Aabb
+
+	// The sphere's centre in the block's frame, x ↦ R(−θ)(x − x1); the contact back to the world frame.
+	Real cs, sn;
+	planarCosSin(state1.ori, cs, sn);
+	const Vector2r          d = state2.pos.head<2>() - state1.pos.head<2>();
+	const Vector2r          local(cs * d.x() + sn * d.y(), -sn * d.x() + cs * d.y());
+	const rbsm::DiskContact c = rbsm::diskPolygonContact(rbsm::PolygonView { block.vertices.data(), block.edgeNormals.data(), int(block.vertices.size()) }, local, r);
+
+	const bool isNew = !I->geom;
+	if (isNew && c.overlap < 0 && !force) return false;
+	if (isNew && !rbsm_mixed::materialsAccepted(materialReports, *scene, "Ig2_Polygon2D_Sphere_ScGeom", *I, rbsm_mixed::Role::Block, rbsm_mixed::Role::Grain))
+		return false;
+	if (isNew) I->geom = boost::static_pointer_cast<ScGeom>(ClassFactory::instance().createShared("ScGeom")); // Debian's constructor
+	ScGeom&        g = static_cast<ScGeom&>(*I->geom);
+	const Vector3r normal(cs * c.normal.x() - sn * c.normal.y(), sn * c.normal.x() + cs * c.normal.y(), 0);
+	const Vector2r point = state1.pos.head<2>() + Vector2r(cs * c.point.x() - sn * c.point.y(), sn * c.point.x() + cs * c.point.y());
+	g.contactPoint       = Vector3r(point.x(), point.y(), state2.pos.z());
+	g.penetrationDepth   = c.overlap;
+	g.refR1 = g.refR2 = r;
+	// false: branch vectors from the contact point, the block being no sphere (as YADE's box-sphere contact)
+	g.precompute(state1, state2, scene, I, normal, isNew, shift2, false);
+	return true;
+}
+
+} // namespace yade
