@@ -32,6 +32,21 @@ namespace {
 		return s && s->getClassIndex() == Polygon2D::getClassIndexStatic() ? static_cast<const Polygon2D*>(s) : nullptr;
 	}
 
+	// An end of an RBSM joint. A block's state was checked by the per-body pass (BlockStateCheck).
+	// The other end of a joint on a Wall or a Facet is a rigid boundary (h2 = 0) that may be left
+	// unfixed with no mass or inertia (utils.wall/facet give none): as in RbsmGeom::reducedMassOf it
+	// counts as infinite mass, and a missing polar inertia as a rotation that the joint cannot drive,
+	// instead of a division by zero (the kernel refuses a free body without mass).
+	rbsm::DynBody dynBody(const Body& b)
+	{
+		const State& s = *b.state;
+		if (polygonOf(b)) return dynBody(s);
+		rbsm::DynBody d = dynBody(s);
+		if (!(s.mass > 0)) d.fixed = true;
+		if (!(s.inertia.z() > 0)) d.inertia = std::numeric_limits<Real>::infinity();
+		return d;
+	}
+
 	// the RBSM joint of an interaction, or false (class indices: this runs over every interaction)
 	bool rbsmJoint(const Interaction& I, const RbsmGeom*& g, const RbsmPhys*& p)
 	{
@@ -161,7 +176,7 @@ Real RbsmTimeStepper::estimate()
 			const Body::id_t id = side == 0 ? I->getId1() : I->getId2();
 			if (dynIndex[id] < 0) {
 				dynIndex[id] = int(dynBodies.size());
-				dynBodies.push_back(dynBody(*bodies[id]->state));
+				dynBodies.push_back(dynBody(*bodies[id]));
 				dynIds.push_back(id);
 			}
 			ends[side] = dynIndex[id];
@@ -204,7 +219,7 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 	for (const auto& I : *scene->interactions) {
 		if (I->iterMadeReal != scene->iter) continue;
 		const Body::id_t                 id1 = I->getId1(), id2 = I->getId2();
-		const std::vector<rbsm::DynBody> pair { dynBody(*bodies[id1]->state), dynBody(*bodies[id2]->state) };
+		const std::vector<rbsm::DynBody> pair { dynBody(*bodies[id1]), dynBody(*bodies[id2]) };
 		if (!jointAsDynContact(*I, 0, 1, c)) continue;
 		Real add[2];
 		rbsm::contactRowBounds(pair, c, add[0], add[1]);
