@@ -12,6 +12,7 @@
 
 #include <boost/python.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <sstream>
@@ -87,6 +88,17 @@ namespace {
 	}
 
 	std::atomic<int> motionReports { 0 };
+
+	// The joints in the order of their body ids, not the interaction container's: the container's
+	// order after O.load differs from the uninterrupted run's (YADE saves only the real interactions),
+	// and the per-block sums below are floating-point sums (a loaded scene must estimate bitwise alike).
+	void sortByIds(std::vector<const Interaction*>& joints)
+	{
+		std::sort(joints.begin(), joints.end(), [](const Interaction* a, const Interaction* b) {
+			const auto ka = std::minmax(a->getId1(), a->getId2()), kb = std::minmax(b->getId1(), b->getId2());
+			return ka < kb;
+		});
+	}
 	std::atomic<int> blockStateReports { 0 };
 }
 
@@ -167,11 +179,16 @@ Real RbsmTimeStepper::estimate()
 	dynIndex.assign(bodies.size(), -1); // body id -> index in dynBodies
 	rowBounds.assign(kRow * bodies.size(), 0);
 	size_t nContacts = 0;
+	jointOrder.clear();
 	for (const auto& I : *scene->interactions) {
 		const RbsmGeom* g;
 		const RbsmPhys* p;
-		if (!rbsmJoint(*I, g, p)) continue;
-		int ends[2];
+		if (rbsmJoint(*I, g, p)) jointOrder.push_back(I.get());
+	}
+	sortByIds(jointOrder);
+	for (const Interaction* I : jointOrder) {
+		const RbsmPhys* p = static_cast<const RbsmPhys*>(I->phys.get());
+		int             ends[2];
 		for (int side = 0; side < 2; side++) {
 			const Body::id_t id = side == 0 ? I->getId1() : I->getId2();
 			if (dynIndex[id] < 0) {
@@ -216,8 +233,11 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 	boundsHold(bodies.size());
 	rbsm::DynContact                 c;
 	const Real                       inf = std::numeric_limits<Real>::infinity();
-	for (const auto& I : *scene->interactions) {
-		if (I->iterMadeReal != scene->iter) continue;
+	jointOrder.clear();
+	for (const auto& I : *scene->interactions)
+		if (I->iterMadeReal == scene->iter) jointOrder.push_back(I.get());
+	sortByIds(jointOrder); // (a block with two new joints: its bounds add up alike after a load)
+	for (const Interaction* I : jointOrder) {
 		const Body::id_t                 id1 = I->getId1(), id2 = I->getId2();
 		const std::vector<rbsm::DynBody> pair { dynBody(*bodies[id1]), dynBody(*bodies[id2]) };
 		if (!jointAsDynContact(*I, 0, 1, c)) continue;

@@ -77,6 +77,7 @@ private:
 	std::vector<rbsm::DynBody>    dynBodies;
 	std::vector<int>              dynIndex, dynIds;
 	std::vector<rbsm::DynContact> dynContacts;
+	std::vector<const Interaction*> jointOrder; // the joints of a pass, by body ids
 	std::vector<Real>             inradius; // per body id, from the last full estimate
 	long                          jointsSeen = -1;
 };
