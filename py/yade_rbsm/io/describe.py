@@ -35,7 +35,12 @@ __all__ = ["describe", "SaveFileInfo", "classes_in", "local_yade_classes", "RBSM
 # The classes of the yade-rbsm plugin (tests/io checks this list against the built plugin).
 RBSM_CLASSES = frozenset((
     "Polygon2D", "Bo1_Polygon2D_Aabb", "RbsmMat", "RbsmGeom", "RbsmPhys", "Ig2_Polygon2D_Polygon2D_RbsmGeom",
-    "Ip2_RbsmMat_RbsmMat_RbsmPhys", "Law2_RbsmGeom_RbsmPhys_MohrCoulomb", "RbsmTimeStepper"))
+    "Ip2_RbsmMat_RbsmMat_RbsmPhys", "Law2_RbsmGeom_RbsmPhys_MohrCoulomb", "RbsmTimeStepper",
+    # the qt view's functors (issue 16)
+    "Gl1_Polygon2D", "Gl1_RbsmGeom", "Gl1_RbsmPhys",
+    # mixed scenes: blocks with spheres, walls and facets (issue 17)
+    "Ig2_Polygon2D_Sphere_ScGeom", "Ip2_RbsmMat_FrictMat_FrictPhys", "Ig2_Polygon2D_Wall_RbsmGeom",
+    "Ig2_Polygon2D_Facet_RbsmGeom", "RbsmPairCheck"))
 
 _XML_CLASS = re.compile(rb'class_name="([^"]+)"')
 _BINARY_KEY = re.compile(rb"yade::[A-Za-z_][A-Za-z0-9_]*")
