@@ -24,11 +24,13 @@ def test_vtkrecorder_with_contact_recorders_is_switched_off_not_crashing(recorde
     p = run_yade(STACK + """
 O.engines = O.engines + [VTKRecorder(fileName=%r, recorders=%r, iterPeriod=1)]
 O.run(5, True)
-report(dead=O.engines[-1].dead, iter=O.iter)
+report(dead=O.engines[-1].dead, iter=O.iter, index=len(O.engines) - 1)
 """ % (str(tmp_path / "r-"), recorders), workdir=str(tmp_path))
     assert p.returncode == 0, "yade exited with %d (crash)\n%s" % (p.returncode, p.stderr[-3000:])
-    assert results(p) == [{"dead": True, "iter": 5}]
-    assert "VTKRecorder (O.engines[5]) with recorders" in p.stderr and "switched off" in p.stderr
+    (r,) = results(p)
+    # the recorder is the last engine: after the 6 of engines() (RbsmPairCheck, issue 17, is the 6th)
+    assert r == {"dead": True, "iter": 5, "index": 6}
+    assert "VTKRecorder (O.engines[%d]) with recorders" % r["index"] in p.stderr and "switched off" in p.stderr
 
 
 def test_vtkrecorder_safe_recorders_keep_running(tmp_path):
