@@ -318,6 +318,41 @@ Real RbsmTimeStepper::checkMotion()
 	return travelDt;
 }
 
+// YADE's collider enlarges each box by its Verlet sweep and runs again once a body's centroid has
+// moved beyond it (NewtonIntegrator), but a rotation moves a block's corners too: by R·χ, χ the chord
+// of the rotation since the box was made. A block tipping onto its neighbour was found deep inside
+// it, a step of spring energy from nothing at every landing (a rocking block bounced metres high).
+// So the collider runs at the next step when the next pose can leave the box: |Δx|∞ + R χ, with
+// this step's velocities added twice as margin, beyond the sweep (and half the box's round-off margin).
+void RbsmTimeStepper::keepBoundsAhead()
+{
+	const auto& bodies = scene->bodies->body;
+	if (boundPose.size() < bodies.size()) boundPose.resize(bodies.size());
+	bool runCollider = false;
+	for (const auto& b : bodies) {
+		if (!b || !b->bound) continue;
+		const Polygon2D* poly = polygonOf(*b);
+		if (!poly) continue;
+		const State& st = *b->state;
+		Real         c, s;
+		planarCosSin(st.ori, c, s);
+		BoundPose& ref = boundPose[size_t(b->id)];
+		if (b->bound->lastUpdateIter == scene->iter) ref = BoundPose { scene->iter, c, s }; // the collider ran this step
+		if (runCollider) continue;
+		if (ref.iter != b->bound->lastUpdateIter) { // a box made while this engine was not watching
+			runCollider = true;
+			continue;
+		}
+		const Real     R     = poly->circumradius;
+		const Real     chord = std::hypot(c - ref.c, s - ref.s);
+		const Vector3r d     = st.pos - b->bound->refPos;
+		const Real     move  = std::max(std::abs(d.x()), std::abs(d.y())) + 2 * scene->dt * st.vel.head<2>().cwiseAbs().maxCoeff()
+		        + R * (chord + 2 * scene->dt * std::abs(st.angVel.z()));
+		if (move > b->bound->sweepLength + 0.5e-6 * R) runCollider = true;
+	}
+	if (runCollider) scene->doSort = true;
+}
+
 Real RbsmTimeStepper::stableDt() const { return safetyFactor * std::min(criticalDt, firstContactDt) / std::sqrt(1 + newtonDamping); }
 
 Real RbsmTimeStepper::limit()
@@ -333,6 +368,7 @@ void RbsmTimeStepper::action()
 	if (lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval) fullCheck();
 	else if (made != jointsSeen) addJointsMadeThisStep();
 	jointsSeen          = made;
+	keepBoundsAhead();
 	const Real travelDt = checkMotion();
 
 	const Real limit = stableDt();
