@@ -9,6 +9,7 @@
 #include <core/Scene.hpp>
 
 #include <boost/python.hpp>
+#include <algorithm>
 
 #include <cmath>
 #include <sstream>
@@ -139,6 +140,20 @@ void RbsmTimeStepper::boundsHold(size_t nBodies)
 	if (rowBounds.size() < kRow * nBodies) rowBounds.resize(kRow * nBodies, 0);
 }
 
+// The joints in the order of their body ids: the container's order depends on when the collider ran
+// (an erased interaction is replaced by the last one), and the sums of the bounds must not (a loaded
+// scene continues bit for bit, tests/robustness/test_persistence.py).
+template <class Keep> const std::vector<const Interaction*>& RbsmTimeStepper::jointsByIds(Keep keep)
+{
+	sortedJoints.clear();
+	for (const auto& I : *scene->interactions)
+		if (I->isReal() && keep(*I)) sortedJoints.push_back(I.get());
+	std::sort(sortedJoints.begin(), sortedJoints.end(), [](const Interaction* a, const Interaction* b) {
+		return std::make_pair(a->getId1(), a->getId2()) < std::make_pair(b->getId1(), b->getId2());
+	});
+	return sortedJoints;
+}
+
 Real RbsmTimeStepper::estimate()
 {
 	const auto& bodies = scene->bodies->body;
@@ -146,7 +161,7 @@ Real RbsmTimeStepper::estimate()
 	dynIndex.assign(bodies.size(), -1); // body id -> index in dynBodies
 	rowBounds.assign(kRow * bodies.size(), 0);
 	size_t nContacts = 0;
-	for (const auto& I : *scene->interactions) {
+	for (const Interaction* I : jointsByIds([](const Interaction&) { return true; })) {
 		const RbsmGeom* g;
 		const RbsmPhys* p;
 		if (!rbsmJoint(*I, g, p)) continue;
@@ -195,8 +210,7 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 	boundsHold(bodies.size());
 	rbsm::DynContact                 c;
 	const Real                       inf = std::numeric_limits<Real>::infinity();
-	for (const auto& I : *scene->interactions) {
-		if (I->iterMadeReal != scene->iter) continue;
+	for (const Interaction* I : jointsByIds([this](const Interaction& J) { return J.iterMadeReal == scene->iter; })) {
 		const Body::id_t                 id1 = I->getId1(), id2 = I->getId2();
 		const std::vector<rbsm::DynBody> pair { dynBody(*bodies[id1]->state), dynBody(*bodies[id2]->state) };
 		if (!jointAsDynContact(*I, 0, 1, c)) continue;

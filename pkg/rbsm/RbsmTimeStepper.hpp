@@ -66,6 +66,7 @@ private:
 	void addJointsMadeThisStep();
 	Real checkMotion();
 	void keepBoundsAhead();
+	template <class Keep> const std::vector<const Interaction*>& jointsByIds(Keep keep);
 	Real firstContactEstimate() const;
 	bool jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
 	Real blockDt(size_t id) const; // damped step of body id's rows (rowBounds)
@@ -81,6 +82,7 @@ private:
 		long iter = -1; // Bound::lastUpdateIter when c, s were taken
 		Real c = 1, s = 0;
 	};
+	std::vector<const Interaction*> sortedJoints; // jointsByIds' result
 	std::vector<BoundPose> boundPose; // per body id: its rotation when the collider last made its box
 };
 REGISTER_SERIALIZABLE(RbsmTimeStepper);

@@ -164,7 +164,7 @@ elif case == "rocking":
     w, h = p.get("w", 2.0), p.get("h", 0.5)
     poly = lift(rotated(rect(-w / 2, -h / 2, w, h), math.radians(p.get("angle", 10.0))), p.get("drop", 0.01))
     b = O.bodies[O.bodies.append(polygon2d(poly, mat))]
-    O.engines = engines()
+    O.engines = engines(safety=p.get("safety", 0.8))
     O.trackEnergy = True
     g, m, inertia, y0 = 9.81, b.state.mass, b.state.inertia[2], b.state.pos[1]
 
