@@ -336,6 +336,7 @@ def probe_slipping_surface(steps=500, damping=0.0, check=20, O=None, **kw):
     Returns a SlipSurface or None."""
     if O is None:
         from yade import O
+    from .scene import advance
     mark = "rbsm_slip_probe"
     O.saveTmp(mark)
     try:
@@ -348,7 +349,7 @@ def probe_slipping_surface(steps=500, damping=0.0, check=20, O=None, **kw):
         done = 0
         while done < steps:
             k = min(check, steps - done)
-            O.run(int(k), True)
+            advance(int(k))
             done += k
             seen.update((I.id1, I.id2) for I in O.interactions
                         if I.isReal and type(I.phys).__name__ == "RbsmPhys" and I.phys.nSlipping > 0)

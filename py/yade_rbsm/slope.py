@@ -801,13 +801,14 @@ def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None):
     ratio (:func:`unbalanced_ratio`) is below *tol*, checked every *check* steps, or *max_steps*.
     Restores the previous damping. Returns (converged, steps, ratio)."""
     from yade import O
+    from .scene import advance
     newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
     old = newton.damping
     newton.damping = damping
     steps, ratio = 0, float("inf")
     try:
         while steps < max_steps:
-            O.run(check, True)
+            advance(check)
             steps += check
             ratio = unbalanced_ratio()
             if progress:

@@ -114,6 +114,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     """One trial at factor *F* from the state saved under *mark* (see the module docstring).
     Returns a :class:`Trial`."""
     from yade import O, Vector3
+    from .scene import advance
     from .slope import unbalanced_ratio
     w0 = time.time()
     O.loadTmp(mark)
@@ -130,7 +131,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     below = 0
     while steps < max_steps:
         n = min(check, max_steps - steps)
-        O.run(n, True)
+        advance(n)
         steps += n
         dmax = max((O.bodies[i].state.pos - start[i]).norm() for i in ids)
         if dmax > d_fail:
