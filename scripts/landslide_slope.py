@@ -246,7 +246,7 @@ t_dyn0 = O.time
 t0 = time.time()
 for k in range(nchunks):
     while O.time - t_dyn0 < args.time * (k + 1) / nchunks * (1 - 1e-9):
-        O.run(max(1, min(200, nsteps // nchunks)), True)
+        yr.advance(max(1, min(200, nsteps // nchunks)))
     dmax = max((O.bodies[i].state.pos - O.bodies[i].state.refPos).norm() for i in mobile)
     nslip = sum(1 for I in O.interactions if I.isReal and I.phys.nSlipping > 0)
     nopen = sum(1 for I in O.interactions if I.isReal and I.phys.nOpen > 0)

@@ -66,6 +66,16 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	const Vector2r                tangent = g.tangent();
 	const Real                    dt  = scene->dt;
 	RbsmPhys::Point* const        pts = p.pointData();
+	// A frictional contact that grows (a block tipping onto its face) takes in material with no shear
+	// displacement: its points' shear tractions, spread over the new length, keep their old force
+	// (held, they would create shear force and energy from nothing). Bonded points are the shared
+	// edge's material and keep theirs.
+	if (p.contactLength > 0 && g.length > p.contactLength) {
+		const Real keep = p.contactLength / g.length;
+		for (int k = 0; k < n; k++)
+			if (!pts[k].joint.intact) pts[k].joint.shearTraction *= keep;
+	}
+	p.contactLength = g.length;
 	for (int k = 0; k < n; k++) {
 		const Real                   s   = g.rule->s[k];
 		const Real                   a   = g.rule->w[k] * area;

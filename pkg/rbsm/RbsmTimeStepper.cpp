@@ -88,17 +88,6 @@ namespace {
 	}
 
 	std::atomic<int> motionReports { 0 };
-
-	// The joints in the order of their body ids, not the interaction container's: the container's
-	// order after O.load differs from the uninterrupted run's (YADE saves only the real interactions),
-	// and the per-block sums below are floating-point sums (a loaded scene must estimate bitwise alike).
-	void sortByIds(std::vector<const Interaction*>& joints)
-	{
-		std::sort(joints.begin(), joints.end(), [](const Interaction* a, const Interaction* b) {
-			const auto ka = std::minmax(a->getId1(), a->getId2()), kb = std::minmax(b->getId1(), b->getId2());
-			return ka < kb;
-		});
-	}
 	std::atomic<int> blockStateReports { 0 };
 }
 
@@ -172,6 +161,20 @@ void RbsmTimeStepper::boundsHold(size_t nBodies)
 	if (rowBounds.size() < kRow * nBodies) rowBounds.resize(kRow * nBodies, 0);
 }
 
+// The joints in the order of their body ids: the container's order depends on when the collider ran
+// (an erased interaction is replaced by the last one), and the sums of the bounds must not (a loaded
+// scene continues bit for bit, tests/robustness/test_persistence.py).
+template <class Keep> const std::vector<const Interaction*>& RbsmTimeStepper::jointsByIds(Keep keep)
+{
+	sortedJoints.clear();
+	for (const auto& I : *scene->interactions)
+		if (I->isReal() && keep(*I)) sortedJoints.push_back(I.get());
+	std::sort(sortedJoints.begin(), sortedJoints.end(), [](const Interaction* a, const Interaction* b) {
+		return std::make_pair(a->getId1(), a->getId2()) < std::make_pair(b->getId1(), b->getId2());
+	});
+	return sortedJoints;
+}
+
 Real RbsmTimeStepper::estimate()
 {
 	const auto& bodies = scene->bodies->body;
@@ -179,16 +182,11 @@ Real RbsmTimeStepper::estimate()
 	dynIndex.assign(bodies.size(), -1); // body id -> index in dynBodies
 	rowBounds.assign(kRow * bodies.size(), 0);
 	size_t nContacts = 0;
-	jointOrder.clear();
-	for (const auto& I : *scene->interactions) {
+	for (const Interaction* I : jointsByIds([](const Interaction&) { return true; })) {
 		const RbsmGeom* g;
 		const RbsmPhys* p;
-		if (rbsmJoint(*I, g, p)) jointOrder.push_back(I.get());
-	}
-	sortByIds(jointOrder);
-	for (const Interaction* I : jointOrder) {
-		const RbsmPhys* p = static_cast<const RbsmPhys*>(I->phys.get());
-		int             ends[2];
+		if (!rbsmJoint(*I, g, p)) continue;
+		int ends[2];
 		for (int side = 0; side < 2; side++) {
 			const Body::id_t id = side == 0 ? I->getId1() : I->getId2();
 			if (dynIndex[id] < 0) {
@@ -233,11 +231,7 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 	boundsHold(bodies.size());
 	rbsm::DynContact                 c;
 	const Real                       inf = std::numeric_limits<Real>::infinity();
-	jointOrder.clear();
-	for (const auto& I : *scene->interactions)
-		if (I->iterMadeReal == scene->iter) jointOrder.push_back(I.get());
-	sortByIds(jointOrder); // (a block with two new joints: its bounds add up alike after a load)
-	for (const Interaction* I : jointOrder) {
+	for (const Interaction* I : jointsByIds([this](const Interaction& J) { return J.iterMadeReal == scene->iter; })) {
 		const Body::id_t                 id1 = I->getId1(), id2 = I->getId2();
 		const std::vector<rbsm::DynBody> pair { dynBody(*bodies[id1]), dynBody(*bodies[id2]) };
 		if (!jointAsDynContact(*I, 0, 1, c)) continue;
@@ -359,6 +353,41 @@ Real RbsmTimeStepper::checkMotion()
 	return travelDt;
 }
 
+// YADE's collider enlarges each box by its Verlet sweep and runs again once a body's centroid has
+// moved beyond it (NewtonIntegrator), but a rotation moves a block's corners too: by R·χ, χ the chord
+// of the rotation since the box was made. A block tipping onto its neighbour was found deep inside
+// it, a step of spring energy from nothing at every landing (a rocking block bounced metres high).
+// So the collider runs at the next step when the next pose can leave the box: |Δx|∞ + R χ, with
+// this step's velocities added twice as margin, beyond the sweep (and half the box's round-off margin).
+void RbsmTimeStepper::keepBoundsAhead()
+{
+	const auto& bodies = scene->bodies->body;
+	if (boundPose.size() < bodies.size()) boundPose.resize(bodies.size());
+	bool runCollider = false;
+	for (const auto& b : bodies) {
+		if (!b || !b->bound) continue;
+		const Polygon2D* poly = polygonOf(*b);
+		if (!poly) continue;
+		const State& st = *b->state;
+		Real         c, s;
+		planarCosSin(st.ori, c, s);
+		BoundPose& ref = boundPose[size_t(b->id)];
+		if (b->bound->lastUpdateIter == scene->iter) ref = BoundPose { scene->iter, c, s }; // the collider ran this step
+		if (runCollider) continue;
+		if (ref.iter != b->bound->lastUpdateIter) { // a box made while this engine was not watching
+			runCollider = true;
+			continue;
+		}
+		const Real     R     = poly->circumradius;
+		const Real     chord = std::hypot(c - ref.c, s - ref.s);
+		const Vector3r d     = st.pos - b->bound->refPos;
+		const Real     move  = std::max(std::abs(d.x()), std::abs(d.y())) + 2 * scene->dt * st.vel.head<2>().cwiseAbs().maxCoeff()
+		        + R * (chord + 2 * scene->dt * std::abs(st.angVel.z()));
+		if (move > b->bound->sweepLength + 0.5e-6 * R) runCollider = true;
+	}
+	if (runCollider) scene->doSort = true;
+}
+
 Real RbsmTimeStepper::stableDt() const { return safetyFactor * std::min(criticalDt, firstContactDt) / std::sqrt(1 + newtonDamping); }
 
 Real RbsmTimeStepper::limit()
@@ -397,6 +426,7 @@ void RbsmTimeStepper::action()
 	if (lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval) fullCheck();
 	else if (made != jointsSeen) addJointsMadeThisStep();
 	jointsSeen          = made;
+	keepBoundsAhead();
 	const Real travelDt = checkMotion();
 
 	const Real limit = stableDt();

@@ -39,6 +39,9 @@ public:
 		"its inner radius in one step (tunnelling, or an explosion) is reported by id and the run stops after that step; "
 		"with setDt the step is also kept short enough for every block to move by at most half that (never below a tenth of "
 		"the stable step, so that an explosion is reported, not run in slow motion).\n\n"
+		"It also makes the collider run (Scene.doSort) before a block's rotation since its box was made can carry "
+		"a corner out of the box: YADE's Verlet boxes follow translations only, and a rotating block was found already deep "
+		"inside its neighbour.\n\n"
 		"Place it after :yref:`InteractionLoop` and before :yref:`NewtonIntegrator`, so that the joints of this step are "
 		"known before the integration.\n\n"
 		"At every step it also switches off (dead) a :yref:`VTKRecorder` whose recorders (intr, stress, bstresses, all, ...) "
@@ -68,6 +71,8 @@ private:
 	void fullCheck();
 	void addJointsMadeThisStep();
 	Real checkMotion();
+	void keepBoundsAhead();
+	template <class Keep> const std::vector<const Interaction*>& jointsByIds(Keep keep);
 	Real firstContactEstimate() const;
 	bool jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
 	Real blockDt(size_t id) const; // damped step of body id's rows (rowBounds)
@@ -77,9 +82,14 @@ private:
 	std::vector<rbsm::DynBody>    dynBodies;
 	std::vector<int>              dynIndex, dynIds;
 	std::vector<rbsm::DynContact> dynContacts;
-	std::vector<const Interaction*> jointOrder; // the joints of a pass, by body ids
 	std::vector<Real>             inradius; // per body id, from the last full estimate
 	long                          jointsSeen = -1;
+	struct BoundPose {
+		long iter = -1; // Bound::lastUpdateIter when c, s were taken
+		Real c = 1, s = 0;
+	};
+	std::vector<const Interaction*> sortedJoints; // jointsByIds' result
+	std::vector<BoundPose> boundPose; // per body id: its rotation when the collider last made its box
 };
 REGISTER_SERIALIZABLE(RbsmTimeStepper);
 

@@ -341,6 +341,7 @@ def probe_slipping_surface(steps=500, damping=0.0, check=20, O=None, **kw):
     damping = number("probe_slipping_surface", "damping", damping, 0, 1, high_open=True)
     if O is None:
         from yade import O
+    from .scene import advance
     mark = "rbsm_slip_probe"
     O.saveTmp(mark)
     try:
@@ -353,7 +354,7 @@ def probe_slipping_surface(steps=500, damping=0.0, check=20, O=None, **kw):
         done = 0
         while done < steps:
             k = min(check, steps - done)
-            O.run(int(k), True)
+            advance(int(k))
             done += k
             seen.update((I.id1, I.id2) for I in O.interactions
                         if I.isReal and type(I.phys).__name__ == "RbsmPhys" and I.phys.nSlipping > 0)

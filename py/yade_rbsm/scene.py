@@ -3,7 +3,7 @@ from yade import wrapper
 
 from .checks import count, number
 
-__all__ = ["engines", "critical_time_step"]
+__all__ = ["engines", "critical_time_step", "advance"]
 
 
 def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, set_dt=True, interval=100, enlarge=0.0,
@@ -84,3 +84,24 @@ def critical_time_step():
     is the step RbsmTimeStepper allows at its default safety 0.8 (inf: no two blocks can meet).
     RbsmTimeStepper().estimate() gives the joints' undamped step alone."""
     return wrapper.RbsmTimeStepper(safetyFactor=1).limit()
+
+
+def advance(n):
+    """Runs *n* steps in the calling thread and returns when they are done, like ``O.run(n, True)``
+    but without its idle waits: ``O.run(n, True)`` polls the background run every 40 ms (YADE's
+    ``O.wait()``), so a helper that checks the scene every few steps spent most of its time asleep
+    (docs/benchmarks.md, "Idle waits"). Raises RuntimeError when a step is stopped by a report of the
+    plugin (a block moving too far in one step, a pair of bodies it cannot handle: the message is on
+    stderr), where ``O.run`` would have returned early and the caller gone on."""
+    from yade import O
+
+    n = int(n)
+    if n < 0:
+        raise ValueError("advance(n): n must be >= 0 (got %d)" % n)
+    O.stopAtIter = -1  # a report during a step sets it to the next step (rbsm_report::stopAfterThisStep)
+    step = O.step
+    for _ in range(n):
+        step()
+        if O.stopAtIter == O.iter:
+            O.stopAtIter = -1
+            raise RuntimeError("yade-rbsm: the run was stopped at step %d by the error reported above" % O.iter)

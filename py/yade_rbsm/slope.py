@@ -806,13 +806,14 @@ def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None):
     tol = number("settle", "tol", tol, 0, low_open=True)
     max_steps, check = count("settle", "max_steps", max_steps), count("settle", "check", check)
     damping = number("settle", "damping", damping, 0, 1, high_open=True)
+    from .scene import advance
     newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
     old = newton.damping
     newton.damping = damping
     steps, ratio = 0, float("inf")
     try:
         while steps < max_steps:
-            O.run(check, True)
+            advance(check)
             steps += check
             ratio = unbalanced_ratio()
             if progress:

@@ -123,6 +123,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     """One trial at factor *F* from the state saved under *mark* (see the module docstring).
     Returns a :class:`Trial`."""
     from yade import O, Vector3
+    from .scene import advance
     from .slope import unbalanced_ratio
     F, tol, d_fail, max_steps, check, damping = _trial_args("trial", F, tol, d_fail, max_steps, check, damping)
     w0 = time.time()
@@ -140,7 +141,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     below = 0
     while steps < max_steps:
         n = min(check, max_steps - steps)
-        O.run(n, True)
+        advance(n)
         steps += n
         dmax = max((O.bodies[i].state.pos - start[i]).norm() for i in ids)
         if dmax > d_fail:

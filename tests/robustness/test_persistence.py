@@ -182,14 +182,14 @@ def full_drop():
 @pytest.mark.parametrize("ext", ["xml", "bin"])
 def test_engine_state(full_drop, ext, tmp_path):
     """Scene 'drop', saved at step 10 while setCohesionNow is pending and 3 steps after a time-step check:
-    the contact of the falling block is made after the load, not bonded, and the checks that lower O.dt
-    as it rocks flat fall on the same steps. Bitwise at every step (sorted loop)."""
+    the contact of the falling block is made after the load, not bonded, and the checks that change O.dt
+    as it lands and rocks fall on the same steps. Bitwise at every step (sorted loop)."""
     full = full_drop
     saved, cont = save_and_continue("persist", DROP, tmp_path, ext)
     assert saved["cohesionPending"] and saved["stepper"][0] == 7, "the saved scene must hold the engine state"
     assert [j["ids"] for j in full["joints"]] == [[0, 1], [0, 2]]
     assert full["joints"][0]["intact"] == [True, True] and full["joints"][1]["intact"] == [False, False]
-    assert full["dt"] < 0.99 * saved["dt"], "O.dt must be lowered after the save (by the checks compared here)"
+    assert abs(full["dt"] - saved["dt"]) > 0.01 * saved["dt"], "O.dt must change after the save (by the checks compared here)"
     order, state = compare_steps(full["steps"], cont["steps"])
     d, where = diff({k: full[k] for k in KEYS}, {k: cont[k] for k in KEYS})
     print("%s, drop: O.dt %.6g -> %.6g s; first differing step %s; at the end %.3e at %s"

@@ -99,10 +99,29 @@ PILES = [(1, 1), (2, 2)] if not LONG else [(s, j) for s in (1, 2, 3) for j in (1
 def test_random_pile(seed, threads):
     """300 random convex blocks (3-9 vertices, aspect 1-4, sizes 0.05-5 m), random velocities and spins, in a box
     of fixed blocks, engines() defaults, no contact damping, 0.3 s. Before: every seed exploded (energy x800 to
-    x18000, blocks thrown out at km/s). After: no NaN, no block leaves the box, and the total energy
-    (O.trackEnergy) grows by at most 1.4 % of the work of gravity (seed 2; 0.5 % seed 1). The issue asks for
-    1 %: not reached (the energy of contact onset at corner impacts), so 2 % is asserted here."""
+    x18000, blocks thrown out at km/s). With the stepper alone the energy still grew by 0.6 %, 1.4 %, 2.2 % of the
+    work of gravity (seeds 1-3): a frictional contact that grew kept its shear tractions over the new length
+    (force from nothing); with new contact length carrying no shear, the growth is 0.00 % on the three seeds.
+    Asserted: no NaN, no block leaves the box, growth at most 1 % of the work of gravity (the issue's figure)."""
     r = run_scene("random_pile", {"seed": seed, "t_end": 0.3, "E": 1e8, "width": 80}, threads=threads)
     print({k: v for k, v in r.items() if k != "energy"}, "growth/grav = %.4f" % (r["worst_growth"] / r["grav_work"]))
     assert r["finite"] and r["left"] == 0
-    assert r["worst_growth"] <= 0.02 * r["grav_work"]
+    assert r["worst_growth"] <= 0.01 * r["grav_work"]
+
+
+@pytest.mark.parametrize("kw", [dict(phi=0.0), dict(phi=30.0, safety=0.5), dict(w=4.0, h=1.0, angle=30.0, drop=0.0, phi=0.0),
+                                dict(w=1.0, h=1.0, angle=45.0, drop=0.0, phi=30.0)],
+                         ids=["frictionless", "friction-safety-0.5", "long-on-corner", "square-on-corner"])
+def test_a_rocking_block_gains_no_energy(kw):
+    """A tilted block dropped on a base lands, rocks and comes to rest; its total energy never grows.
+    Before: the collider's Verlet bounds followed translations only, so a block that rotated onto the
+    base was found already deep inside it: 2 x 0.5 m, 10°, 1 cm drop, frictionless: +19 kJ in 8 landings
+    (100 x the energy of the fall), bounced 1.0 m high (1.4 m at safety 0.2, 1.4 m at 0.05). After: no gain,
+    except with friction at the default safety 0.8, where the undamped block still bounces after 3 s and one
+    landing, resolved in three steps with a corner 1 cm deep at onset, returned 29 % of its fall energy (0 at
+    safety 0.5, 0.3, 0.2: the impact is resolved in more steps); hence that case at safety 0.5 (README)."""
+    r = case("rocking", **kw)
+    print(r)
+    assert r["finite"]
+    assert r["gain"] < 0.02, "the block gained %.1f %% of its fall energy" % (100 * r["gain"])
+    assert r["ymax"] <= r["y0"] + 1e-3

@@ -13,7 +13,7 @@ p = params()
 rng = random.Random(p.get("seed", 1))
 n = p.get("n", 300)
 smin, smax = p.get("size_min", 0.05), p.get("size_max", 5.0)
-rock = RbsmMat(young=p.get("E", 1e7), poisson=0.2, density=2500, frictionAngle=math.radians(30), cohesion=0, tensileStrength=0)
+rock = RbsmMat(young=p.get("E", 1e7), poisson=0.2, density=2500, frictionAngle=math.radians(p.get("phi", 30)), cohesion=0, tensileStrength=0)
 O.materials.append(rock)
 
 
