@@ -1,4 +1,5 @@
 #include <pkg/rbsm/RbsmMat.hpp>
+#include <pkg/rbsm/kernel/KawaiSprings.hpp>
 
 #include <cmath>
 #include <sstream>
@@ -24,6 +25,12 @@ void RbsmMat::postLoad(RbsmMat& m)
 	require(std::isfinite(m.density) && m.density > 0, m, "density", m.density, "must be a finite number > 0");
 	require(std::isfinite(m.young) && m.young > 0, m, "young", m.young, "must be a finite number > 0");
 	require(std::isfinite(m.poisson) && m.poisson > -1 && m.poisson < 0.5, m, "poisson", m.poisson, "must be in (-1, 0.5)");
+	require(!m.planeStrain || 1 - 2 * m.poisson >= rbsm::kMinOneMinusTwoNu,
+	        m,
+	        "poisson",
+	        m.poisson,
+	        "is too close to 0.5 for plane strain: 1 - 2 poisson < 1e-8 makes the joints' modulus E(1-nu)/((1+nu)(1-2nu)) over 1e8 x young, "
+	        "a nearly incompressible solid with no stable explicit step (use poisson <= 0.5 - 5e-9)");
 	require(std::isfinite(m.frictionAngle) && m.frictionAngle >= 0 && m.frictionAngle < Mathr_PI / 2,
 	        m,
 	        "frictionAngle",

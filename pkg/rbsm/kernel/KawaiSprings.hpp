@@ -36,12 +36,19 @@ struct SpringStiffness {
 	Real ks; ///< shear  stiffness per unit joint area, Pa/m
 };
 
+/// Plane strain needs 1 − 2ν at least this (ν ≤ 0.5 − 5e-9), see checkElastic.
+constexpr Real kMinOneMinusTwoNu = 1e-8;
+
 namespace detail {
 	inline void checkElastic(Real E, Real nu, PlaneState ps)
 	{
 		if (!(E > 0)) throw std::invalid_argument("Kawai springs: Young's modulus must be > 0");
 		const Real nuMax = (ps == PlaneState::PlaneStrain) ? 0.5 : 1.0;
 		if (!(nu > -1 && nu < nuMax)) throw std::invalid_argument("Kawai springs: Poisson's ratio out of range (-1, 0.5) plane strain / (-1, 1) plane stress");
+		// Nearer to 0.5, 1 − 2ν keeps fewer than half of its digits and E′ exceeds 1e8·E: a solid that
+		// incompressible has no stable explicit step (it came out as O.dt = 0 or 1e-24 s).
+		if (ps == PlaneState::PlaneStrain && !(1 - 2 * nu >= kMinOneMinusTwoNu))
+			throw std::invalid_argument("Kawai springs: Poisson's ratio too close to 0.5 in plane strain (1 - 2 nu < 1e-8: nearly incompressible, no stable explicit step)");
 	}
 } // namespace detail
 

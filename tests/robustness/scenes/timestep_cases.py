@@ -16,7 +16,8 @@ pwave         a block 1 cm above a base, O.dt = 0.5 × PWaveTimeStep() with set_
 check_new     set_dt=False at a step just below the limit of a block resting on a base; a second block
               falls onto it: the step that makes the stiffer joint must be refused.
 dt_zero       O.dt = 0 with set_dt=False.
-nu_half       ν = 0.5 − 1e-15 (plane strain) with contact damping 0.3.
+nu_half       ν = 0.5 − 1e-15 (plane strain): refused by RbsmMat's constructor and assignment; then the
+              scene with the kept ν = 0.2 and contact damping 0.3 runs.
 rocking       a w × h block tilted by `angle` degrees, dropped `drop` m on a base (friction angle `phi`,
               engines() defaults, no damping): the largest gain of total energy (kinetic + gravity +
               springs + friction dissipated) between contacts and at the end, as a fraction of the energy it can lose
@@ -44,7 +45,7 @@ def lift(poly, dy):
     return [(x, y - m + dy) for x, y in poly]
 
 
-mat = RbsmMat(young=1e8, poisson=p.get("poisson", 0.2), density=2000, frictionAngle=math.radians(30),
+mat = RbsmMat(young=1e8, poisson=p.get("poisson", 0.2) if case != "nu_half" else 0.2, density=2000, frictionAngle=math.radians(30),
               cohesion=p.get("cohesion", 0.0), tensileStrength=p.get("cohesion", 0.0))
 O.materials.append(mat)
 O.bodies.append(polygon2d(rect(-10, -1, 20, 1), mat, fixed=True))
@@ -154,6 +155,18 @@ elif case == "dt_zero":
     res["exc"] = run_catching(10)
     res["iter"] = O.iter
 elif case == "nu_half":
+    # refused where the value is given (constructor, assignment), before any step
+    try:
+        RbsmMat(young=1e8, poisson=p["poisson"], density=2000)
+        res["ctor"] = None
+    except ValueError as e:
+        res["ctor"] = str(e)
+    try:
+        mat.poisson = p["poisson"]
+        res["assign"] = None
+    except ValueError as e:
+        res["assign"] = str(e)
+    res["poisson_kept"] = mat.poisson
     O.bodies.append(polygon2d(rect(-0.5, 0.0, 1, 1), mat))
     O.engines = engines(contact_damping=0.3)
     res["exc"] = run_catching(10)
