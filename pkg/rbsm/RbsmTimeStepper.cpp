@@ -87,6 +87,24 @@ namespace {
 		return 0;
 	}
 
+	// NewtonIntegrator's gravity, the same way (density scaling scales the weight with the contact forces).
+	Vector3r newtonGravityOf(const Scene& scene)
+	{
+		for (const auto& e : scene.engines) {
+			if (!e || e->getClassName() != "NewtonIntegrator") continue;
+			const PyGILState_STATE gil = PyGILState_Ensure();
+			Vector3r               g   = Vector3r::Zero();
+			try {
+				g = boost::python::extract<Vector3r>(e->pyDict()["gravity"]);
+			} catch (const boost::python::error_already_set&) {
+				PyErr_Clear();
+			}
+			PyGILState_Release(gil);
+			return g.allFinite() ? g : Vector3r::Zero();
+		}
+		return Vector3r::Zero();
+	}
+
 	std::atomic<int> motionReports { 0 };
 	std::atomic<int> blockStateReports { 0 };
 }
@@ -210,13 +228,15 @@ Real RbsmTimeStepper::estimate()
 		}
 	}
 	dynContacts.resize(nContacts);
-	std::vector<Real> omega2; // Gershgorin bound of each block's rows
-	rbsm::criticalTimeStepGershgorin(dynBodies, dynContacts, &omega2);
+	std::vector<Real> omega2, diag2; // Gershgorin bound of each block's rows, and its own block's share
+	rbsm::criticalTimeStepGershgorin(dynBodies, dynContacts, &omega2, densityScaling ? &diag2 : nullptr);
 	criticalDt   = std::numeric_limits<Real>::infinity();
 	criticalBody = -1;
+	if (densityScaling) rowDiag.assign(bodies.size(), 0);
 	for (size_t b = 0; b < dynIds.size(); b++) {
 		const size_t id         = size_t(dynIds[b]);
 		rowBounds[kRow * id] = omega2[b];
+		if (densityScaling) rowDiag[id] = diag2[b];
 		const Real dt           = blockDt(id);
 		if (dt < criticalDt) criticalDt = dt, criticalBody = int(id);
 	}
@@ -319,6 +339,51 @@ void RbsmTimeStepper::fullCheck()
 	estimate();
 	firstContactDt = firstContactEstimate();
 	newtonDamping  = newtonDampingOf(*scene);
+	if (densityScaling) scaleMasses();
+}
+
+// Density scaling (quasi-static stages): every block whose own stable step is below the target gets
+// its inertia scaled by massScale = s >= 1 (rbsm::densityScale: its Gershgorin row then allows the
+// target whichever neighbours are scaled), so that all run at the target step. Its joint dashpots keep
+// the factor of its unscaled step (smaller ω: a smaller damping ratio and a larger factor).
+void RbsmTimeStepper::scaleMasses()
+{
+	const auto& bodies = scene->bodies->body;
+	massScale.assign(bodies.size(), 1);
+	std::vector<Real> own; // each jointed block's own stable step
+	for (size_t id = 0; id < bodies.size() && kRow * id < rowBounds.size(); id++)
+		if (rowBounds[kRow * id] > 0) own.push_back(safetyFactor * blockDt(id) / std::sqrt(1 + newtonDamping));
+	if (own.empty()) {
+		scaledDt = std::numeric_limits<Real>::infinity();
+		return;
+	}
+	std::nth_element(own.begin(), own.begin() + own.size() / 2, own.end());
+	scaledDt = targetDt > 0 ? targetDt : own[own.size() / 2];
+	for (size_t id = 0; id < bodies.size() && kRow * id < rowBounds.size(); id++) {
+		const Real w2 = rowBounds[kRow * id];
+		if (!(w2 > 0)) continue;
+		const Real damped = blockDt(id) * std::sqrt(w2) / 2; // the dashpots' factor on 2/ω
+		const Real wT     = 2 * safetyFactor * damped / (scaledDt * std::sqrt(1 + newtonDamping));
+		massScale[id]     = rbsm::densityScale(rowDiag[id], w2 - rowDiag[id], wT * wT);
+	}
+}
+
+// The scaled blocks' accelerations: NewtonIntegrator divides force + m g by m; adding (1/s − 1) of
+// it (and of the torque) makes that (force + m g)/(s m). Equilibrium (zero force) is unchanged.
+void RbsmTimeStepper::applyMassScale()
+{
+	const Vector3r g = newtonGravityOf(*scene);
+	scene->forces.sync();
+	scaledLoads.clear(); // read all first: an addForce unsyncs the container
+	for (const auto& b : scene->bodies->body) {
+		if (!b || size_t(b->id) >= massScale.size() || !(massScale[b->id] > 1)) continue;
+		const Real k = 1 / massScale[b->id] - 1;
+		scaledLoads.push_back({ b->id, k * (scene->forces.getForce(b->id) + b->state->mass * g), k * scene->forces.getTorque(b->id) });
+	}
+	for (const ScaledLoad& l : scaledLoads) {
+		scene->forces.addForce(l.id, l.force);
+		scene->forces.addTorque(l.id, l.torque);
+	}
 }
 
 // A block that moves by a good part of its own size in one step passes through thin neighbours
@@ -388,7 +453,11 @@ void RbsmTimeStepper::keepBoundsAhead()
 	if (runCollider) scene->doSort = true;
 }
 
-Real RbsmTimeStepper::stableDt() const { return safetyFactor * std::min(criticalDt, firstContactDt) / std::sqrt(1 + newtonDamping); }
+Real RbsmTimeStepper::stableDt() const
+{
+	if (densityScaling && massScaled) return scaledDt; // the blocks below it are scaled up to it
+	return safetyFactor * std::min(criticalDt, firstContactDt) / std::sqrt(1 + newtonDamping);
+}
 
 Real RbsmTimeStepper::limit()
 {
@@ -423,11 +492,14 @@ void RbsmTimeStepper::action()
 	}
 	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: estimate now)
 	const long made = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
+	if (densityScaling != massScaled) lastCheck = -1, massScaled = densityScaling; // switched: estimate now
+	if (!densityScaling) massScale.clear();
 	if (lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval) fullCheck();
-	else if (made != jointsSeen) addJointsMadeThisStep();
+	else if (made != jointsSeen) densityScaling ? fullCheck() : addJointsMadeThisStep(); // scales need the full rows
 	jointsSeen          = made;
 	keepBoundsAhead();
 	const Real travelDt = checkMotion();
+	if (densityScaling) applyMassScale();
 
 	const Real limit = stableDt();
 	std::ostringstream msg;

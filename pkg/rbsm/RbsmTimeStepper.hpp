@@ -57,6 +57,11 @@ public:
 		((Real, firstContactDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step of the stiffest single joint the free blocks without joints can form [s] (inf: no such block, or nothing it can meet)."))
 		((Real, newtonDamping, 0, Attr::readonly, "NewtonIntegrator's damping as read at the last full estimate."))
 		((int, criticalBody, -1, Attr::readonly, "Id of the block whose joints limit criticalDt (-1: none)."))
+		((bool, densityScaling, false, , "Quasi-static stages only (gravity settling, strength reduction): blocks whose own stable step is below :yref:`targetDt<RbsmTimeStepper.targetDt>` get heavier inertia (massScale, their force and weight divided by it before NewtonIntegrator), so that all of them run at the target step. Equilibrium, and so a settled state or a factor of safety, is unchanged; the motion towards it is not physical (time, kinetic energy). Off for dynamics. NewtonIntegrator.densityScaling is not used (it is tied to GlobalStiffnessTimeStepper)."))
+		((Real, targetDt, 0, , "Step of the density-scaled stages [s]; 0: the stable step of the median block (the smaller blocks scaled up to it)."))
+		((Real, scaledDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "The step density scaling runs at [s] (targetDt, or the median block's step), from the last full estimate."))
+		((std::vector<Real>, massScale, , Attr::readonly, "Per body id: the factor s ≥ 1 applied to its inertia by densityScaling (1: none; empty when off)."))
+		((bool, massScaled, false, Attr::hidden, "densityScaling as of the last step (a switch makes a full estimate at once)."))
 		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bound ω² of its rows, the dashpot Σ c·A and the softer spring Σ k·A of its joints since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run).")),
 		/*ctor*/,
 		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the present joints [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
@@ -72,6 +77,8 @@ private:
 	void addJointsMadeThisStep();
 	Real checkMotion();
 	void keepBoundsAhead();
+	void scaleMasses();
+	void applyMassScale();
 	template <class Keep> const std::vector<const Interaction*>& jointsByIds(Keep keep);
 	Real firstContactEstimate() const;
 	bool jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
@@ -89,6 +96,12 @@ private:
 		Real c = 1, s = 0;
 	};
 	std::vector<const Interaction*> sortedJoints; // jointsByIds' result
+	struct ScaledLoad {
+		Body::id_t id;
+		Vector3r   force, torque;
+	};
+	std::vector<ScaledLoad>         scaledLoads;  // applyMassScale's corrections of this step
+	std::vector<Real>               rowDiag;      // per body id: the own-block share of rowBounds' ω² (densityScaling)
 	std::vector<BoundPose> boundPose; // per body id: its rotation when the collider last made its box
 };
 REGISTER_SERIALIZABLE(RbsmTimeStepper);

@@ -10,7 +10,7 @@ except ImportError:
     pass
 else:
     from .blocks import polygon2d, polygon_properties  # noqa: F401
-    from .scene import engines, critical_time_step, advance  # noqa: F401
+    from .scene import engines, critical_time_step, advance, time_stepper  # noqa: F401
     from .mixed import mixed_engines  # noqa: F401
 
 # submodules (import them explicitly): slope, safety, snapshots, limit_equilibrium, vtkexport (VTK

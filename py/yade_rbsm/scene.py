@@ -3,7 +3,7 @@ from yade import wrapper
 
 from .checks import count, number
 
-__all__ = ["engines", "critical_time_step", "advance"]
+__all__ = ["engines", "critical_time_step", "advance", "time_stepper"]
 
 
 def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, set_dt=True, interval=100, enlarge=0.0,
@@ -105,3 +105,13 @@ def advance(n):
         if O.stopAtIter == O.iter:
             O.stopAtIter = -1
             raise RuntimeError("yade-rbsm: the run was stopped at step %d by the error reported above" % O.iter)
+
+
+def time_stepper():
+    """The RbsmTimeStepper of O.engines (by its label ``timeStepper`` from engines(), else by type),
+    or None."""
+    from yade import O
+
+    steppers = [e for e in O.engines if type(e).__name__ == "RbsmTimeStepper"]
+    labelled = [e for e in steppers if e.label == "timeStepper"]
+    return (labelled or steppers or [None])[0]

@@ -160,8 +160,10 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
 
 def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None, tol=1e-4, d_fail=0.05,
                        max_steps=5000, check=100, damping=0.7, reduce_tensile=False, verbose=True,
-                       mark="rbsm_srm_reference"):
+                       mark="rbsm_srm_reference", density_scaling=False):
     """Factor of safety by strength reduction on the current scene (see the module docstring).
+    *density_scaling*: RbsmTimeStepper.densityScaling in every trial (fewer steps to the same
+    equilibrium; restored at the end).
 
     *ids*: monitored blocks for the runaway criterion (default: all free blocks). Returns an
     :class:`SRResult`; raises RuntimeError if no bracket is found within *max_trials* trials."""
@@ -171,6 +173,13 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     grow = number(where, "grow", grow, 1, low_open=True)
     rtol = number(where, "rtol", rtol, 0, low_open=True)
     max_trials = count(where, "max_trials", max_trials)
+    from .scene import time_stepper
+    stepper = time_stepper()
+    if density_scaling and stepper is None:
+        raise ValueError("strength_reduction: density_scaling needs RbsmTimeStepper in O.engines (yade_rbsm.engines())")
+    old_scaling = stepper.densityScaling if stepper is not None else False
+    if stepper is not None:
+        stepper.densityScaling = bool(density_scaling)  # saved with the reference: on in every trial
     ref = _Reference()
     O.saveTmp(mark)
     trials = []
@@ -202,4 +211,7 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
                 lo = F
     finally:
         O.loadTmp(mark)
+        stepper = time_stepper()  # (the loaded scene's)
+        if stepper is not None:
+            stepper.densityScaling = old_scaling
     return SRResult(0.5 * (lo + hi), lo, hi, trials, crit)

@@ -180,3 +180,55 @@ TEST(CriticalTimeStep, ClosingContact)
 	const auto diagonal = closingContact(r0u, r1u, Vec2(-5, -1e-6), Vec2(-6, 1e-5), Vec2(-5, 0), Vec2(-5, 0));
 	EXPECT_NEAR((diagonal.second - diagonal.first).norm(), 0.0, 1e-12);
 }
+
+// Density scaling: a block on fixed ground (no coupling) needs s = diag / omega_T^2 exactly; a block
+// already below the target keeps s = 1.
+TEST(CriticalTimeStep, DensityScaleClosedForm)
+{
+	EXPECT_DOUBLE_EQ(densityScale(400, 0, 100), 4);
+	EXPECT_DOUBLE_EQ(densityScale(50, 30, 100), 1);
+	EXPECT_DOUBLE_EQ(densityScale(0, 0, 100), 1);
+	EXPECT_DOUBLE_EQ(densityScale(0, 200, 100), 4); // coupling only: off / sqrt(s) = omega_T^2
+	const Real s = densityScale(300, 100, 100); // 300/s + 100/sqrt(s) = 100
+	EXPECT_NEAR(300 / s + 100 / std::sqrt(s), 100, 1e-12);
+}
+
+// Random chains of free blocks (masses over three orders of magnitude) joined by random contacts:
+// every block scaled by densityScale for the target of the median block, the exact critical step of
+// the scaled system is at least the target step (the bound holds whichever neighbours are scaled).
+TEST(CriticalTimeStep, DensityScaledSystemMeetsTheTarget)
+{
+	std::mt19937                     rng(7);
+	std::uniform_real_distribution<> u(0, 1);
+	for (int trial = 0; trial < 200; ++trial) {
+		const int            n = 2 + int(u(rng) * 6);
+		std::vector<DynBody> b(n + 1);
+		b[0].fixed = true;
+		for (int i = 1; i <= n; ++i) {
+			const Real size = std::pow(10.0, -1 + 2 * u(rng)), mass = 2000 * size * size;
+			b[i].mass = mass, b[i].inertia = mass * size * size / 6, b[i].centroid = Vec2(i, u(rng));
+		}
+		std::vector<DynContact> c;
+		for (int i = 1; i <= n; ++i) {
+			const int  j = int(u(rng) * i); // to an earlier block or the ground
+			const Real a = std::atan2(u(rng) - 0.5, 1.0), L = 0.05 + u(rng);
+			const Vec2 nrm(std::cos(a + 1.5), std::sin(a + 1.5)), mid = b[i].centroid + Vec2(0.3 * u(rng), -0.5);
+			const Vec2 t(-nrm.y(), nrm.x());
+			c.push_back(contact(j, i, nrm, 1e8 * (0.1 + u(rng)), 4e7 * (0.1 + u(rng)), { mid - 0.3 * L * t, mid + 0.3 * L * t }, { 0.5 * L, 0.5 * L }));
+		}
+		std::vector<Real> total, diag;
+		criticalTimeStepGershgorin(b, c, &total, &diag);
+		std::vector<Real> rows(total.begin() + 1, total.end());
+		std::nth_element(rows.begin(), rows.begin() + rows.size() / 2, rows.end());
+		const Real omegaT2 = rows[rows.size() / 2];
+		std::vector<DynBody> scaled = b;
+		for (int i = 1; i <= n; ++i) {
+			const Real s = densityScale(diag[i], total[i] - diag[i], omegaT2);
+			EXPECT_GE(s, 1);
+			scaled[i].mass *= s, scaled[i].inertia *= s;
+		}
+		const Real target = 2 / std::sqrt(omegaT2);
+		EXPECT_GE(criticalTimeStepExact(scaled, c), target * (1 - 1e-9)) << "trial " << trial;
+		EXPECT_GE(criticalTimeStepGershgorin(scaled, c), target * (1 - 1e-9)) << "trial " << trial;
+	}
+}

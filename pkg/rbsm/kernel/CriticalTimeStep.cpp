@@ -128,7 +128,16 @@ std::pair<Vec2, Vec2> closingContact(const Vec2& ref0, const Vec2& ref1, const V
 	return t.dot(p1 - p0) >= 0 ? std::make_pair(a, b) : std::make_pair(b, a); // the segment's own orientation
 }
 
-Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts, std::vector<Real>* perBody)
+Real densityScale(Real diag, Real off, Real omegaT2)
+{
+	if (!(omegaT2 > 0) || !(diag + off > omegaT2)) return 1;
+	if (!(diag > 0)) return (off / omegaT2) * (off / omegaT2); // off x = omega_T^2
+	const Real x = (-off + std::sqrt(off * off + 4 * diag * omegaT2)) / (2 * diag);
+	return 1 / (x * x);
+}
+
+Real criticalTimeStepGershgorin(
+        const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts, std::vector<Real>* perBody, std::vector<Real>* perBodyDiag)
 {
 	check(bodies, contacts);
 	const size_t n = bodies.size();
@@ -161,6 +170,7 @@ Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::v
 	std::vector<Real> bound(n, 0);
 	for (size_t b = 0; b < n; ++b)
 		if (!bodies[b].fixed) bound[b] = lambdaMax(inverseSqrtMass(bodies[b]).asDiagonal() * diag[b] * inverseSqrtMass(bodies[b]).asDiagonal());
+	const std::vector<Real> diagBound = bound; // lambda_max(S_bb) alone
 	for (const auto& kv : off) {
 		const int a = kv.first.first, b = kv.first.second;
 		if (bodies[a].fixed || bodies[b].fixed) continue; // fixed DOFs are removed from the system
@@ -172,6 +182,7 @@ Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::v
 	Real lmax = 0;
 	for (size_t b = 0; b < n; ++b)
 		if (!bodies[b].fixed) lmax = std::max(lmax, bound[b]);
+	if (perBodyDiag) perBodyDiag->assign(diagBound.begin(), diagBound.end());
 	if (perBody) {
 		perBody->assign(n, 0);
 		for (size_t b = 0; b < n; ++b)

@@ -46,7 +46,21 @@ struct DynContact {
 ///
 /// perBody (optional): the bound of each body's rows, lambda_max(S_bb) + sum ||S_bc|| [rad^2/s^2]
 /// (0 for fixed bodies): every eigenvalue lies below one of them (the highest is the result's).
-Real criticalTimeStepGershgorin(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts, std::vector<Real>* perBody = nullptr);
+/// perBodyDiag (optional): the part lambda_max(S_bb) of each of those bounds (the rest couples b to
+/// its neighbours), for densityScale.
+Real criticalTimeStepGershgorin(
+        const std::vector<DynBody>&    bodies,
+        const std::vector<DynContact>& contacts,
+        std::vector<Real>*             perBody     = nullptr,
+        std::vector<Real>*             perBodyDiag = nullptr);
+
+/// Density scaling of one block for a target omega_T^2 = (2/dt_target)^2: the factor s >= 1 by which
+/// its mass and inertia may be multiplied so that its Gershgorin row bound, diag + off, falls to
+/// omega_T^2. Scaling b by s divides its diagonal block of S = M^-1/2 K M^-1/2 by s and each coupling
+/// block S_bc by sqrt(s s_c) >= sqrt(s) (neighbours are scaled by s_c >= 1 or not at all), so
+/// diag/s + off/sqrt(s) <= omega_T^2 suffices: with x = 1/sqrt(s), diag x^2 + off x = omega_T^2.
+/// 1 if the block is already below the target (or has no joints).
+Real densityScale(Real diag, Real off, Real omegaT2);
 
 /// How much one contact raises the block Gershgorin bound of its two bodies' rows (the perBody
 /// values above): lambda_max(S_bb) + ||S_12|| for each side (0 for a fixed body; the coupling term
