@@ -40,6 +40,14 @@ std::string blockStateProblem(const Body& b)
 	}
 	if (!finite(s.pos)) return "has a state.pos that is not finite";
 	if (!finite(s.vel) || !finite(s.angVel)) return "has a state.vel or state.angVel that is not finite";
+	// YADE keeps the velocity of a blocked DOF as it is: a z velocity carries the block out of the
+	// plane of its neighbours (their boxes stop overlapping) and it passes through them silently.
+	if (s.vel.z() != 0 || s.angVel.x() != 0 || s.angVel.y() != 0) {
+		std::ostringstream msg;
+		msg << "moves out of the x-y plane (state.vel z = " << s.vel.z() << ", state.angVel x, y = " << s.angVel.x() << ", " << s.angVel.y()
+		    << "; a Polygon2D block moves in the plane only: set them to 0)";
+		return msg.str();
+	}
 	return {};
 }
 

@@ -57,6 +57,7 @@ void RbsmPairCheck::action()
 		std::cerr << "yade-rbsm: ERROR: RbsmPairCheck: bodies #" + std::to_string(id1) + " (" + s1 + ") and #" + std::to_string(id2) + " (" + s2
 		                     + ") meet, but no IGeomFunctor of the InteractionLoop handles Polygon2D and " + other + " (Ig2_Polygon2D_" + other
 		                     + "_... is missing): they pass through each other"
+		                     + (other == "Sphere" || other == "Wall" || other == "Facet" ? std::string(" (yade_rbsm.mixed_engines() has the functors for them)") : std::string())
 		                     + (stopRun ? "; the run stops after step " + std::to_string(scene->iter) : std::string("; the run goes on (stopRun=False)"))
 		                     + "\n";
 		if (stopRun) rbsm_report::stopAfterThisStep(*scene);

@@ -312,6 +312,14 @@ Real RbsmTimeStepper::firstContactEstimate() const
 		keep(bestS, r / Es, b->id);
 		blocks.push_back(Block { b->id, poly, En, Es, r });
 	}
+	// A YADE Wall or Facet is a rigid boundary (h2 = 0, issue 17's joints): a partner that adds no
+	// compliance (without it a block above a wall alone had no first contact, and O.dt stayed 1e-8).
+	for (const auto& b : scene->bodies->body)
+		if (b && b->shape && !polygonOf(*b) && (b->shape->getClassName() == "Wall" || b->shape->getClassName() == "Facet")) {
+			keep(bestN, 0, -2);
+			keep(bestS, 0, -2);
+			break;
+		}
 	Real top[2] = { 0, 0 }; // the two largest ω² of free blocks
 	for (const Block& k : blocks) {
 		const State& s = *scene->bodies->body[size_t(k.id)]->state;

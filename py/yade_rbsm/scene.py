@@ -50,7 +50,12 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     if verlet_dist is not None:
         verlet_dist = number("engines", "verlet_dist", verlet_dist, 0)
     check_materials()  # a block without RbsmMat: ValueError now, not an abort in the loop
-    collider = wrapper.InsertionSortCollider([wrapper.Bo1_Polygon2D_Aabb(enlarge=enlarge)], label="collider")
+    # YADE's own shapes are bounded too, so that a block next to a wall, facet, sphere or box is a pair
+    # RbsmPairCheck reports (this list has no functor for them: use mixed_engines()) instead of a
+    # silent pass-through; without their bounds the collider never pairs them.
+    collider = wrapper.InsertionSortCollider([wrapper.Bo1_Polygon2D_Aabb(enlarge=enlarge), wrapper.Bo1_Sphere_Aabb(),
+                                              wrapper.Bo1_Wall_Aabb(), wrapper.Bo1_Facet_Aabb(), wrapper.Bo1_Box_Aabb()],
+                                             label="collider")
     if verlet_dist is None:
         verlet_dist = 0.01 * _smallest_block()
     if verlet_dist > 0:
@@ -95,6 +100,8 @@ def advance(n):
     stderr), where ``O.run`` would have returned early and the caller gone on."""
     from yade import O
 
+    if isinstance(n, bool) or not float(n).is_integer():
+        raise ValueError("advance(n): n must be a whole number of steps (got %r)" % (n,))
     n = int(n)
     if n < 0:
         raise ValueError("advance(n): n must be >= 0 (got %d)" % n)
@@ -104,7 +111,8 @@ def advance(n):
         step()
         if O.stopAtIter == O.iter:
             O.stopAtIter = -1
-            raise RuntimeError("yade-rbsm: the run was stopped at step %d by the error reported above" % O.iter)
+            raise RuntimeError("yade-rbsm: the run was stopped at step %d by an error of the plugin, printed on stderr "
+                               "(each kind is printed 5 times per process at most)" % O.iter)
 
 
 def time_stepper():

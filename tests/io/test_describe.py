@@ -17,7 +17,9 @@ FORMATS = ("xml", "xml.bz2", "xml.gz", "yade", "yade.gz", "yade.bz2", "bin")
 # the plugin's classes in a scene of engines() (not the qt view's functors, nor the mixed scenes' ones)
 ENGINES_RBSM_CLASSES = {"Polygon2D", "Bo1_Polygon2D_Aabb", "RbsmMat", "RbsmGeom", "RbsmPhys", "Ig2_Polygon2D_Polygon2D_RbsmGeom",
                         "Ip2_RbsmMat_RbsmMat_RbsmPhys", "Law2_RbsmGeom_RbsmPhys_MohrCoulomb", "RbsmTimeStepper", "RbsmPairCheck"}
-RBSM_SCENE_CLASSES = {"ForceResetter", "InsertionSortCollider", "InteractionLoop", "Aabb"} | ENGINES_RBSM_CLASSES
+# (engines()' collider also bounds YADE's own shapes, so that a block next to one is reported)
+RBSM_SCENE_CLASSES = {"ForceResetter", "InsertionSortCollider", "InteractionLoop", "Aabb", "Bo1_Sphere_Aabb", "Bo1_Wall_Aabb",
+                      "Bo1_Facet_Aabb", "Bo1_Box_Aabb"} | ENGINES_RBSM_CLASSES
 
 SAVE = r"""
 from yade_rbsm import polygon2d, engines
