@@ -12,6 +12,7 @@ PACKAGES=(
   python3-ezdxf                         # yade_rbsm.io: DXF import and export
   dpkg-dev                              # the Debian package: dpkg-shlibdeps (cpack DEB), dpkg-deb
   valgrind                              # benchmarks: instruction counts (callgrind; scripts/benchmarks/)
+  openmpi-bin python3-mpi4py            # distributed runs with yade.mpy (mpiexec; tests/mpi/)
 )
 
 if [ "$(id -u)" -eq 0 ]; then
