@@ -362,6 +362,10 @@ void RbsmTimeStepper::keepBoundsAhead()
 		planarCosSin(st.ori, c, s);
 		BoundPose& ref = boundPose[size_t(b->id)];
 		if (b->bound->lastUpdateIter == scene->iter) ref = BoundPose { scene->iter, c, s }; // the collider ran this step
+		else if (b->bound->lastUpdateIter == scene->iter - 1 && ref.iter != scene->iter - 1)
+			// made after this engine ran in the last step, so after its integration: yade.mpy runs its
+			// collider at the end of a step. Nothing has moved since; the pose is the one the box saw.
+			ref = BoundPose { scene->iter - 1, c, s };
 		if (runCollider) continue;
 		if (ref.iter != b->bound->lastUpdateIter) { // a box made while this engine was not watching
 			runCollider = true;
