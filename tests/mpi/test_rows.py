@@ -10,12 +10,18 @@ subdomain borders and with the base on rank 0 during the run).
   included; without it the sums differ by round-off, which this violent scene amplifies to
   millimetres (-j2 against -j1 serially does the same), so the unsorted comparison uses a calm
   variant of the scene (slow blocks, no spin, contact damping 0.3).
+* The same with the subdomains cut by yade_rbsm.mpi.decompose_by_x and by YADE's own recursive
+  bisection (mpy.DOMAIN_DECOMPOSITION).
 * RbsmTimeStepper's collider requests (Scene.doSort, when a rotating block's corner may leave its
   Verlet box) reach yade.mpy: the steps that request it are the serial run's (with the collider's
   fixed Verlet sweep that yade.mpy sets), and after each of them yade.mpy's collider ran on every
   rank. (The stepper used to take the boxes that yade.mpy makes at the end of a step for boxes made
   unseen and asked for a collider run at every step after the first one: 245 of 300 steps here.)
 """
+import json
+import os
+import tempfile
+
 import pytest
 
 from conftest import run_mpi, run_scene, run_spawn, scene
@@ -25,10 +31,13 @@ CALM = {"vx": 0.05, "vy": 0.05, "w": 0.0, "cd": 0.3}
 
 
 def _mpi(params, spawn=False):
-    args = [__import__("json").dumps(dict(params, mode="spawn" if spawn else "mpi"))]
-    r = run_spawn(scene("rows"), args) if spawn else run_mpi(scene("rows"), args)
-    assert not r.timed_out and r.returncode == 0 and len(r.results) == 1, r.tail()
-    return r.results[0]
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "result.json")
+        args = [json.dumps(dict(params, mode="spawn" if spawn else "mpi", out=out))]
+        r = run_spawn(scene("rows"), args) if spawn else run_mpi(scene("rows"), args)
+        assert not r.timed_out and r.returncode == 0 and os.path.exists(out), r.tail()
+        with open(out) as f:
+            return json.load(f)
 
 
 @pytest.fixture(scope="module")
@@ -80,6 +89,15 @@ def test_positions_equal_serial_spawned(serial_sorted):
     print("max |position difference| serial vs 3 ranks (mpy.initialize(3)): %.3g m" % d)
     assert d <= 1e-10
     assert [r["time"] for r in spawned["ranks"]] == [serial_sorted["ranks"][0]["time"]] * 3
+
+
+@pytest.mark.parametrize("decomposition", ["by_x", "bisection"])
+def test_positions_equal_serial_other_decompositions(serial_sorted, decomposition):
+    dist = _mpi(dict(SORTED, decomposition=decomposition))
+    d = _max_diff(serial_sorted, dist)
+    print("decomposition %s: max |position difference| %.3g m, %d joints across ranks" % (decomposition, d, dist["across"]))
+    assert dist["across"] >= 10
+    assert d <= 1e-10
 
 
 def test_positions_equal_serial_unsorted_calm():

@@ -8,6 +8,8 @@ exchange: a deadlock until killed (here: the 60 s timeout).
 * a block moving too far in one step (RbsmTimeStepper stops the run after the step, on rank 1): same;
 * a step refused by RbsmTimeStepper (O.dt above the stable step of rank 2's stiff blocks only): every
   rank raises before anything moves, rank 2 with the stepper's message, ranks 0 and 1 naming rank 2;
+* an error the plugin cannot know about (a user's PyRunner raising on rank 1 only):
+  yade_rbsm.mpi.mpirun ends the MPI job (MPI_Abort) instead of leaving ranks 0 and 2 waiting.
 """
 import json
 
@@ -64,3 +66,12 @@ def test_refused_step_raises_on_every_rank():
         assert "exceeds the stable limit" in by_rank[k]["exc"]
     assert all(x["wall"] < 15 for x in by_rank.values())
 
+
+def test_unknown_error_on_one_rank_aborts_the_job():
+    s = run_scene("stop", {"mode": "serial", "case": "user"})
+    assert s["iter"] == 20 and "a user error on one rank" in s["exc"]
+    r = _mpi({"case": "user", "runner": "rbsm"})
+    assert r.returncode != 0
+    assert "rank 1: an error ended the run on this rank only; aborting the MPI job" in r.output, r.tail()
+    assert "a user error on one rank" in r.output
+    assert r.wall < 30

@@ -8,8 +8,12 @@ argv[1]: JSON {"mode": "serial" | "mpi" (under mpiexec) | "spawn" (mpy.initializ
 per row (40), "steps": 300, "vx", "vy", "w": velocity amplitudes (0.3, 0.1 m/s, 0.05 rad/s), "cd":
 contact damping (0.1), "sorted": InteractionLoop.loopOnSortedInteractions, "mpy_collider": the
 collider's targetInterv = 0 serially, as yade.mpy sets it when it splits a scene (fixed Verlet sweeps:
-its boxes, and so the steps where the time stepper asks for a collider run, are then yade.mpy's)}.
-Rank 0 prints one result (after mergeScene): per rank the final (time, iter, dt), the O.dt of every
+its boxes, and so the steps where the time stepper asks for a collider run, are then yade.mpy's),
+"decomposition": "halves" (as above, by hand), "by_x" (yade_rbsm.mpi.decompose_by_x: the free blocks
+in two slices of 40, the base on rank 0) or "bisection" (YADE's mpy.DOMAIN_DECOMPOSITION: recursive
+bisection of the centroids, the base too)}.
+Rank 0 writes one result (after mergeScene) to the file "out" if given (mpiexec may cut a long line
+of rank 0 with the other ranks' output), else prints it: per rank the final (time, iter, dt), the O.dt of every
 step, the steps where its RbsmTimeStepper asked for a collider run (Scene.doSort) and, under yade.mpy,
 the steps after which yade.mpy's collider ran; the blocks' positions and rotations; the joints at the
 start and at the end, and those at the end whose blocks belong to different ranks.
@@ -43,8 +47,8 @@ for row in range(2):
         b = polygon2d([(x0, y0), (x0 + w, y0), (x0 + w, y0 + h), (x0, y0 + h)], rock)
         b.state.vel = (p.get("vx", 0.3) * math.sin(1.7 * i + row), -p.get("vy", 0.1), 0)
         b.state.angVel = (0, 0, p.get("w", 0.05) * math.cos(i))
-        if mpi:  # (serially a subdomain other than 0 would freeze the block: NewtonIntegrator skips it)
-            b.subdomain = 1 if i < N // 2 else 2
+        if mpi and p.get("decomposition", "halves") == "halves":  # (serially a subdomain other than 0 would
+            b.subdomain = 1 if i < N // 2 else 2                     # freeze the block: NewtonIntegrator skips it)
         O.bodies.append(b)
 O.engines = engines(contact_damping=p.get("cd", 0.1))
 if p.get("sorted"):
@@ -76,6 +80,11 @@ def probeDt():
 
 
 joints0 = sum(1 for i in O.interactions if i.isReal)
+if mpi and p.get("decomposition") == "by_x":
+    import yade_rbsm.mpi
+    yade_rbsm.mpi.decompose_by_x()
+if mpi and p.get("decomposition") == "bisection":
+    mp.DOMAIN_DECOMPOSITION = True
 if mpi:
     mp.mpirun(steps, withMerge=True)
     ranks = mp.comm.gather({"time": O.time, "iter": O.iter, "dt": O.dt, "dts": dts, "sorts": sorts, "collides": collides}, root=0)
@@ -87,7 +96,12 @@ else:
 if rank == 0:
     blocks = [b for b in O.bodies if isinstance(b.shape, Polygon2D) and b.state.blockedDOFs != "xyzXYZ"]
     real = [i for i in O.interactions if i.isReal]
-    emit({"ranks": ranks, "joints0": joints0, "joints": len(real),
+    result = {"ranks": ranks, "joints0": joints0, "joints": len(real),
           "across": sum(1 for i in real if O.bodies[i.id1].subdomain != O.bodies[i.id2].subdomain),
           "pos": {str(b.id): [b.state.pos[0], b.state.pos[1], b.state.ori.toAxisAngle()[1] * b.state.ori.toAxisAngle()[0][2]]
-                  for b in blocks}})
+                  for b in blocks}}
+    if p.get("out"):
+        with open(p["out"], "w") as f:
+            json.dump(result, f)
+    else:
+        emit(result)
