@@ -62,11 +62,13 @@ public:
 		/*ctor*/,
 		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the present joints [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
 		.def("limit", &RbsmTimeStepper::limit, "Runs a full estimate of the scene as it is now (joints, first contacts, NewtonIntegrator.damping) and returns :yref:`stableDt<RbsmTimeStepper.stableDt>` [s], the step this engine would allow; what yade_rbsm.critical_time_step() returns at safetyFactor=1.")
+		.def("checkNextStep", &RbsmTimeStepper::checkNextStep, "Makes the next run of this engine a full estimate (as at the first step), e.g. after a scene was merged from yade.mpy's ranks (yade_rbsm.mpi.to_serial), whose joints this engine has not seen.")
 		.add_property("stableDt", &RbsmTimeStepper::stableDt, "The step this engine allows now [s]: safetyFactor × min(criticalDt, firstContactDt) / √(1 + newtonDamping).")
 	);
 	// clang-format on
 	Real stableDt() const;
 	Real limit();
+	void checkNextStep() { lastCheck = -1; }
 
 private:
 	void fullCheck();

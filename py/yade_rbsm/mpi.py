@@ -339,6 +339,11 @@ def to_serial():
     every body back to subdomain 0 (YADE's NewtonIntegrator moves only the bodies of
     Scene.subdomain, 0 outside yade.mpy) and the Subdomain bodies that yade.mpy inserted erased.
     Afterwards this scene cannot be split again (build a new one for another distributed run).
+    Rank 0's RbsmTimeStepper only knew the blocks of rank 0: its next run is a full estimate of the
+    merged scene (RbsmTimeStepper.checkNextStep()), so the next step is bounded by every joint. (A
+    serial run makes its full estimates every ``interval`` steps from step 0 and adds the joints made
+    in between, so the two continue with slightly different steps unless interval=1, when the
+    continuation is the serial run bit for bit with sorted loops: tests/mpi/test_rows.py.)
     Reading the merged scene (positions, contact forces, factor of safety, snapshots, VTK) needs
     none of this."""
     O = _O()
@@ -351,3 +356,6 @@ def to_serial():
             b.subdomain = 0
     O._sceneObj.subdomain = 0
     O.splitted = False
+    for e in O.engines:
+        if type(e).__name__ == "RbsmTimeStepper":
+            e.checkNextStep()

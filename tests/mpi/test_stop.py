@@ -33,14 +33,11 @@ def _mpi(params, spawn=False, timeout=TIMEOUT):
     ("mixed", "mix plane strain and plane stress materials"),
     ("throw", "moves by"),
 ])
-@pytest.mark.parametrize("spawn", [False, True], ids=["mpiexec", "spawned"])
-def test_stop_after_step_on_every_rank(case, message, spawn):
-    if spawn and case == "throw":
-        pytest.skip("one spawned case is enough (mixed)")
+def test_stop_after_step_on_every_rank(case, message):
     serial = run_scene("stop", {"mode": "serial", "case": case}, output=True)
     s, out_s = serial
     assert s["exc"] is None and 0 < s["iter"] < 100 and message in out_s  # the serial behaviour
-    r = _mpi({"case": case}, spawn=spawn)
+    r = _mpi({"case": case})
     assert r.returncode == 0, r.tail()
     ranks = sorted(x["rank"] for x in r.results)
     assert ranks == [0, 1, 2], r.tail()

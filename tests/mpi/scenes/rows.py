@@ -11,7 +11,8 @@ collider's targetInterv = 0 serially, as yade.mpy sets it when it splits a scene
 its boxes, and so the steps where the time stepper asks for a collider run, are then yade.mpy's),
 "decomposition": "halves" (as above, by hand), "by_x" (yade_rbsm.mpi.decompose_by_x: the free blocks
 in two slices of 40, the base on rank 0) or "bisection" (YADE's mpy.DOMAIN_DECOMPOSITION: recursive
-bisection of the centroids, the base too)}.
+bisection of the centroids, the base too), "interval": RbsmTimeStepper.interval (100), "serial_after":
+run that many steps distributed, then merge and continue on rank 0 alone (yade_rbsm.mpi.to_serial)}.
 Rank 0 writes one result (after mergeScene) to the file "out" if given (mpiexec may cut a long line
 of rank 0 with the other ranks' output), else prints it: per rank the final (time, iter, dt), the O.dt of every
 step, the steps where its RbsmTimeStepper asked for a collider run (Scene.doSort) and, under yade.mpy,
@@ -50,7 +51,7 @@ for row in range(2):
         if mpi and p.get("decomposition", "halves") == "halves":  # (serially a subdomain other than 0 would
             b.subdomain = 1 if i < N // 2 else 2                     # freeze the block: NewtonIntegrator skips it)
         O.bodies.append(b)
-O.engines = engines(contact_damping=p.get("cd", 0.1))
+O.engines = engines(contact_damping=p.get("cd", 0.1), interval=p.get("interval", 100))
 if p.get("sorted"):
     O.engines[2].loopOnSortedInteractions = True
 if p.get("mpy_collider"):
@@ -86,9 +87,13 @@ if mpi and p.get("decomposition") == "by_x":
 if mpi and p.get("decomposition") == "bisection":
     mp.DOMAIN_DECOMPOSITION = True
 if mpi:
-    mp.mpirun(steps, withMerge=True)
+    mp.mpirun(p.get("serial_after") or steps, withMerge=True)
     ranks = mp.comm.gather({"time": O.time, "iter": O.iter, "dt": O.dt, "dts": dts, "sorts": sorts, "collides": collides}, root=0)
     rank = mp.rank
+    if p.get("serial_after") and rank == 0:
+        import yade_rbsm.mpi
+        yade_rbsm.mpi.to_serial()
+        O.run(steps - p["serial_after"], True)
 else:
     O.run(steps, True)
     ranks = [{"time": O.time, "iter": O.iter, "dt": O.dt, "dts": dts, "sorts": sorts, "collides": collides}]
