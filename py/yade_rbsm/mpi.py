@@ -29,6 +29,7 @@ plainly with ``mpy.initialize(3)`` at the top, which spawns the workers running 
     ... build the blocks ...
     O.engines = yr.engines(mpi=True)   # default when yade.mpy is imported before engines()
     rm.decompose_by_x()                # or mpy.DOMAIN_DECOMPOSITION = True (YADE's bisection)
+    rm.distribute()                    # split before any joint is made (bonding, settling: see distribute)
     rm.mpirun(1000, with_merge=True)   # then on rank 0: the whole scene, for post-processing
 """
 import math
