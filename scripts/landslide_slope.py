@@ -35,6 +35,15 @@ Stages:
   6. dynamic stage: damping 0, joint friction back to phi = 30 deg: the wedge slides off.
 All factors of safety are printed in one table at the end.
 
+Distributed (--mpi, YADE's yade.mpy): `mpiexec -n 3 build/yade-rbsm -n -x scripts/landslide_slope.py --mpi`,
+or `build/yade-rbsm -n -x scripts/landslide_slope.py --mpi 3` (spawns 2 workers). The free blocks are cut
+into vertical slices, one per worker (yade_rbsm.mpi.decompose_by_x; the fixed blocks stay on rank 0);
+the gravity stage and the dynamic stage run distributed (one time step for all ranks), the scene is
+merged on rank 0 after the gravity stage and after each third of the dynamic stage, and rank 0 does
+all the post-processing (factors of safety, snapshots, VTK at those merges) and prints alone. The
+probe (4b), strength reduction (5) and the yade.plot series are serial stages, skipped with --mpi.
+--summary FILE writes the figures the tests compare (factors of safety, displacements) as JSON.
+
 Outputs in --out: PNG snapshots (landslide_*.png, Fig. 5-6 style); VTK time series of the blocks and
 contacts (vtk/landslide_blocks.pvd, vtk/landslide_contacts.pvd: open them in ParaView), written
 every --vtk-every s of the dynamic stage; yade.plot series recorded by a PyRunner during the gravity
@@ -83,11 +92,35 @@ ap.add_argument("--vtk-every", type=float, default=0.1, help="VTK snapshot perio
 ap.add_argument("--plot-every", type=int, default=50, help="yade.plot recording period [steps]")
 ap.add_argument("--progress", type=float, default=10.0, help="progress line period [s of wall time]")
 ap.add_argument("--no-search", action="store_true", help="skip the critical-circle search")
+ap.add_argument("--mpi", type=int, nargs="?", const=0, default=None, metavar="N",
+                help="run distributed with yade.mpy: N ranks (spawned; under mpiexec its ranks)")
+ap.add_argument("--sorted-loop", action="store_true",
+                help="sum each block's joint forces in id order (InteractionLoop.loopOnSortedInteractions): the "
+                     "same numbers bit for bit serially (-j1) and with --mpi (slower)")
+ap.add_argument("--summary", default=None, help="write the factors of safety and displacements as JSON")
 ap.add_argument("--yade-warnings", action="store_true",
                 help="keep YADE's InteractionLoop/InsertionSortCollider warnings (one per joint that separates)")
 args = ap.parse_args(sys.argv[1:])
 
 t_wall = time.time()
+mp, master = None, True
+if args.mpi is not None:
+    # 3 ranks on 2 cores: waiting ranks yield the CPU instead of spinning (mpiexec --oversubscribe sets it)
+    os.environ.setdefault("OMPI_MCA_mpi_yield_when_idle", "1")
+    from yade import mpy as mp
+    import yade_rbsm.mpi as rmpi
+    if mp.numThreads is None or mp.numThreads < 2:  # not under mpiexec, not a spawned worker
+        if args.mpi < 2:
+            sys.exit("landslide_slope.py: --mpi N needs N >= 2 ranks (or start it with mpiexec -n N ... --mpi)")
+        mp.initialize(args.mpi)
+    elif args.mpi not in (0, mp.numThreads):
+        sys.exit("landslide_slope.py: --mpi %d but %d MPI ranks" % (args.mpi, mp.numThreads))
+    master = mp.rank == 0
+    if not master:  # the workers compute; rank 0 prints (errors still show: yade.mpy sends stderr to the terminal)
+        sys.stdout = open(os.devnull, "w")
+    if args.probe_steps > 0 or args.strength_reduction:
+        print("--mpi: the probe (--probe-steps) and the strength reduction are serial stages: skipped")
+        args.probe_steps, args.strength_reduction = 0, False
 if not args.yade_warnings:
     # YADE warns "IGeomFunctor returned false on existing interaction!" each time a joint separates
     # (thousands of lines in a landslide) and about verletDist without spheres: errors only.
@@ -136,8 +169,28 @@ print("joint plane psi = 35 deg from the toe (%.2f, %.2f) to the crack at x = %.
       % (toe, y0, xcrack, ycrack))
 
 bmin = min(args.brick) * 1e-2
-O.engines = yr.engines(gravity=(0, -9.81, 0), damping=0.7, set_dt=False, enlarge=bmin, update_tolerance=args.update_tolerance)
+O.engines = yr.engines(gravity=(0, -9.81, 0), damping=0.7, set_dt=False, enlarge=bmin, update_tolerance=args.update_tolerance,
+                       mpi=mp is not None, sorted_loop=args.sorted_loop)
 O.dt = 1e-6  # bonding step
+
+
+# monitored blocks: the free blocks nearest to the wedge's toe, middle and crest, and one behind it
+def nearest(x, y):
+    return min(sb.free, key=lambda b: (O.bodies[b.id].state.pos[0] - x) ** 2 + (O.bodies[b.id].state.pos[1] - y) ** 2).id
+
+
+def watched():
+    return [nearest(7 * scale, y0 + 0.5 * scale), nearest(11 * scale, y0 + 5.5 * scale),
+            nearest(15.5 * scale, y0 + 9.5 * scale), nearest(20 * scale, y0 + 9.5 * scale)]
+
+
+if mp is not None:
+    watch = watched()  # on the whole scene, before the split
+    slices = rmpi.decompose_by_x()
+    print("yade.mpy: %d ranks; free blocks cut into %d vertical slices (centroids x in %s), fixed blocks on rank 0"
+          % (mp.numThreads, len(slices), ", ".join("[%.2f, %.2f]" % r for r in slices)))
+    # split before the joints are made: yade.mpy would make the joints across its borders anew, unbonded
+    rmpi.distribute()
 nj, nbroken = sl.bond_and_break(sb)
 dtc = yr.critical_time_step()
 ts = [e for e in O.engines if type(e).__name__ == "RbsmTimeStepper"][0]
@@ -152,14 +205,12 @@ print("time step: critical %.3e s (seed paper: 0.003 s); running with dt = %.3e 
 print("joints: %d bonded, %d on the crack broken" % (nj, nbroken))
 os.makedirs(args.out, exist_ok=True)
 
-# monitored blocks: the free blocks nearest to the wedge's toe, middle and crest, and one behind it
-def nearest(x, y):
-    return min(sb.free, key=lambda b: (O.bodies[b.id].state.pos[0] - x) ** 2 + (O.bodies[b.id].state.pos[1] - y) ** 2).id
-watch = [nearest(7 * scale, y0 + 0.5 * scale), nearest(11 * scale, y0 + 5.5 * scale),
-         nearest(15.5 * scale, y0 + 9.5 * scale), nearest(20 * scale, y0 + 9.5 * scale)]
-print("monitored blocks (yade.plot d_<id>): %s" % ", ".join("%d at (%.1f, %.1f)" % (i, O.bodies[i].state.pos[0],
-      O.bodies[i].state.pos[1]) for i in watch))
-mon = Monitor(ids=watch, period=args.plot_every, progress=args.progress)  # PyRunner in O.engines
+mon = None
+if mp is None:
+    watch = watched()
+    print("monitored blocks (yade.plot d_<id>): %s" % ", ".join("%d at (%.1f, %.1f)" % (i, O.bodies[i].state.pos[0],
+          O.bodies[i].state.pos[1]) for i in watch))
+    mon = Monitor(ids=watch, period=args.plot_every, progress=args.progress)  # PyRunner in O.engines
 
 # --- gravity stage ---------------------------------------------------------------------------
 tan_settle = 5.0
@@ -177,48 +228,52 @@ for I in O.interactions:
 for b in O.bodies:
     b.state.refPos = b.state.pos  # displacements of the dynamic stage
     b.state.refOri = b.state.ori
-fs = safety.contact_fs(plane)  # the crack joints (open, c = 0) carry no force: plane only
-g = 9.81
-slope_le = safety.le_slope(sb.surface, mat, g=g)  # ground polyline of the blocks; gamma = rho g, c, phi of the material
-# circle tangent to the toe flat at the toe and through the top of the crack (centre above the toe)
-circle = safety.circle_through((toe, y0), (xcrack, surface[-1][1]), (2 * toe - xcrack, surface[-1][1]))
-t0 = time.time()
-search = None if args.no_search else dict(x_range=(toe - 6 * scale, crestx + 6 * scale), y_range=(y0 + 4 * scale, y0 + 30 * scale),
-                                          nx=16, ny=16, refine=2)
-lem = safety.limit_equilibrium_summary(slope_le, circle=circle, polyline=slip, toe=(toe, y0), search=search, n=50)
-fel = lem["Fellenius, slip polyline"]
-print(safety.table2(fs, fel))
-crack = [I for I in O.interactions if I.isReal and abs(I.geom.p0[0] - xcrack) < 1e-2 * scale
-         and abs(I.geom.p1[0] - xcrack) < 1e-2 * scale and I.geom.p0[1] > ycrack - 1e-2]
-print("crack: %d joints in contact carry a normal force of %.1f kN/m (thrust of the crest mass, "
-      "absent from Fellenius)" % (len(crack), sum(I.phys.normalForce for I in crack) / 1e3))
-print("(RBSM: %d joints on the slip polyline, %.2f m of it; planar wedge closed form tan(phi)/tan(psi) = %.3f)"
-      % (fs.n_joints, fs.length, math.tan(phi) / math.tan(psi)))
-print("limit equilibrium on the same slope (gamma = %.2f kN/m3, c = 0, phi = 30 deg; %.1f s wall):"
-      % (slope_le.layers[0].gamma, time.time() - t0))
-for k, v in lem.items():
-    print("  %-28s %s" % (k + ":", v))
-
-# --- surface of slipping joints found by the program ------------------------------------------
-found = None
-if args.probe_steps > 0:
+if mp is not None:
+    rmpi.merge()  # rank 0 now holds every block and joint
+fs = lem = found = None
+if master:  # post-processing: rank 0 holds the merged scene
+    fs = safety.contact_fs(plane)  # the crack joints (open, c = 0) carry no force: plane only
+    g = 9.81
+    slope_le = safety.le_slope(sb.surface, mat, g=g)  # ground polyline of the blocks; gamma = rho g, c, phi of the material
+    # circle tangent to the toe flat at the toe and through the top of the crack (centre above the toe)
+    circle = safety.circle_through((toe, y0), (xcrack, surface[-1][1]), (2 * toe - xcrack, surface[-1][1]))
     t0 = time.time()
-    ss = safety.probe_slipping_surface(steps=args.probe_steps, damping=0.0)
-    if ss is None:
-        print("surface of slipping joints: no joint slipped in a %d-step probe" % args.probe_steps)
-    else:
-        try:
-            found = safety.slip_surface_fs(ss, slope=slope_le)  # contact forces of the state after the gravity stage
-        except ValueError as e:
-            print("surface of slipping joints: %s" % e)
+    search = None if args.no_search else dict(x_range=(toe - 6 * scale, crestx + 6 * scale), y_range=(y0 + 4 * scale, y0 + 30 * scale),
+                                              nx=16, ny=16, refine=2)
+    lem = safety.limit_equilibrium_summary(slope_le, circle=circle, polyline=slip, toe=(toe, y0), search=search, n=50)
+    fel = lem["Fellenius, slip polyline"]
+    print(safety.table2(fs, fel))
+    crack = [I for I in O.interactions if I.isReal and abs(I.geom.p0[0] - xcrack) < 1e-2 * scale
+             and abs(I.geom.p1[0] - xcrack) < 1e-2 * scale and I.geom.p0[1] > ycrack - 1e-2]
+    print("crack: %d joints in contact carry a normal force of %.1f kN/m (thrust of the crest mass, "
+          "absent from Fellenius)" % (len(crack), sum(I.phys.normalForce for I in crack) / 1e3))
+    print("(RBSM: %d joints on the slip polyline, %.2f m of it; planar wedge closed form tan(phi)/tan(psi) = %.3f)"
+          % (fs.n_joints, fs.length, math.tan(phi) / math.tan(psi)))
+    print("limit equilibrium on the same slope (gamma = %.2f kN/m3, c = 0, phi = 30 deg; %.1f s wall):"
+          % (slope_le.layers[0].gamma, time.time() - t0))
+    for k, v in lem.items():
+        print("  %-28s %s" % (k + ":", v))
+
+    # --- surface of slipping joints found by the program ------------------------------------------
+    found = None
+    if args.probe_steps > 0:
+        t0 = time.time()
+        ss = safety.probe_slipping_surface(steps=args.probe_steps, damping=0.0)
+        if ss is None:
+            print("surface of slipping joints: no joint slipped in a %d-step probe" % args.probe_steps)
         else:
-            print("%s (found in an undamped %d-step probe from the state after the gravity stage, state restored; "
-                  "%.1f s wall)" % (ss, args.probe_steps, time.time() - t0))
-            fel_found = found[2] if not isinstance(found[2], str) else None
-            print(safety.table2(found[1], fel_found, title="Table 2 (surface of slipping joints found by the program)"))
-            if isinstance(found[2], str):
-                print("  Fellenius along it failed: %s" % found[2])
-snapshots.snapshot(os.path.join(args.out, "landslide_0_before.png"), "after gravity stage, t = 0", O=O, slip=slip)
+            try:
+                found = safety.slip_surface_fs(ss, slope=slope_le)  # contact forces of the state after the gravity stage
+            except ValueError as e:
+                print("surface of slipping joints: %s" % e)
+            else:
+                print("%s (found in an undamped %d-step probe from the state after the gravity stage, state restored; "
+                      "%.1f s wall)" % (ss, args.probe_steps, time.time() - t0))
+                fel_found = found[2] if not isinstance(found[2], str) else None
+                print(safety.table2(found[1], fel_found, title="Table 2 (surface of slipping joints found by the program)"))
+                if isinstance(found[2], str):
+                    print("  Fellenius along it failed: %s" % found[2])
+    snapshots.snapshot(os.path.join(args.out, "landslide_0_before.png"), "after gravity stage, t = 0", O=O, slip=slip)
 
 # --- strength reduction (optional) -------------------------------------------------------------
 sr = None
@@ -230,23 +285,35 @@ if args.strength_reduction:
     print("  %s\n  %s; %.1f s wall" % (sr, sr.criterion, time.time() - t0))
 
 # --- dynamic stage ---------------------------------------------------------------------------
-mon.mark(" dynamic stage")
+if mon:
+    mon.mark(" dynamic stage")
 vtk_series = vtkexport.VtkSeries(os.path.join(args.out, "vtk"), "landslide")
-vtk_series.write()  # t = 0 of the dynamic stage
-vtk_runner = wrapper.PyRunner(command="vtk_series.write()", virtPeriod=args.vtk_every, label="vtkRunner")
-vtk_runner.virtLast = O.time
-O.engines = O.engines + [vtk_runner]
+if master:
+    vtk_series.write()  # t = 0 of the dynamic stage
+if mp is None:
+    vtk_runner = wrapper.PyRunner(command="vtk_series.write()", virtPeriod=args.vtk_every, label="vtkRunner")
+    vtk_runner.virtLast = O.time
+    O.engines = O.engines + [vtk_runner]
+# (--mpi: a PyRunner would write each rank's part of the scene; VTK is written at the merges instead)
 newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
 newton.damping = 0.0
 nsteps = int(args.time / O.dt)  # O.dt may change a little (time stepper)
-mon.target(nsteps)
+if mon:
+    mon.target(nsteps)
 nchunks = 3
 mobile = [b.id for b in sb.free]
 t_dyn0 = O.time
 t0 = time.time()
 for k in range(nchunks):
-    while O.time - t_dyn0 < args.time * (k + 1) / nchunks * (1 - 1e-9):
-        yr.advance(max(1, min(200, nsteps // nchunks)))
+    while O.time - t_dyn0 < args.time * (k + 1) / nchunks * (1 - 1e-9):  # O.time: the same on every rank
+        if mp is None:
+            yr.advance(max(1, min(200, nsteps // nchunks)))
+        else:
+            rmpi.run(max(1, min(200, nsteps // nchunks)))
+    if mp is not None:
+        rmpi.merge()
+    if not master:
+        continue
     dmax = max((O.bodies[i].state.pos - O.bodies[i].state.refPos).norm() for i in mobile)
     nslip = sum(1 for I in O.interactions if I.isReal and I.phys.nSlipping > 0)
     nopen = sum(1 for I in O.interactions if I.isReal and I.phys.nOpen > 0)
@@ -254,43 +321,59 @@ for k in range(nchunks):
           % (O.time - t_dyn0, dmax, nslip, nopen, time.time() - t0))
     name = "landslide_%d_%s.png" % (k + 1, "during" if k < nchunks - 1 else "after")
     snapshots.snapshot(os.path.join(args.out, name), "dynamic stage, t = %.2f s" % (O.time - t_dyn0), O=O, slip=slip)
-if vtk_series.entries["blocks"][-1][0] < O.time:
+    if mp is not None:
+        vtk_series.write()
+if master and vtk_series.entries["blocks"][-1][0] < O.time:
     vtk_series.write()  # the last state
-png, txt = mon.save(os.path.join(args.out, "landslide_plot"), "landslide slope: gravity stage, then dynamic stage")
+png = txt = "not recorded (--mpi)"
+if mon:
+    png, txt = mon.save(os.path.join(args.out, "landslide_plot"), "landslide slope: gravity stage, then dynamic stage")
 print("snapshots in %s; VTK series %s (%d snapshots, open in ParaView); plot %s, data %s"
       % (args.out, ", ".join(sorted(vtk_series.pvd.values())), len(vtk_series.entries["blocks"]), png, txt))
+if mp is not None:
+    states = rmpi.rank_states()  # collective
+    print("yade.mpy: ranks at t = %s s after %s steps" % (", ".join("%.9g" % t for t, i, dt in states),
+                                                         ", ".join(str(i) for t, i, dt in states)))
+if args.summary and master:
+    import json
+    with open(args.summary, "w") as f:
+        json.dump({"ranks": mp.numThreads if mp else 1, "settle_steps": steps, "settle_ratio": ratio,
+                   "fs_contact": fs.fs, "fs_shear": fs.shear, "fs_normal": fs.normal, "fs_joints": fs.n_joints,
+                   "dynamic_time": O.time - t_dyn0, "iter": O.iter, "dt": O.dt,
+                   "displacement": {str(i): list(O.bodies[i].state.pos - O.bodies[i].state.refPos)[:2] for i in mobile},
+                   "rotation": {str(i): O.bodies[i].state.ori.toAxisAngle()[1] * O.bodies[i].state.ori.toAxisAngle()[0][2]
+                                for i in mobile}}, f, indent=1)
 
-# --- all factors of safety -------------------------------------------------------------------
-def _fs(v):
-    return v.fs if hasattr(v, "fs") else None
+# --- all factors of safety (rank 0) -------------------------------------------------------
+if master:
+    def _fs(v):
+        return v.fs if hasattr(v, "fs") else None
 
+    def _note(v, extra=""):
+        if isinstance(v, str):
+            return "failed: " + v
+        if hasattr(v, "circle"):  # SearchResult
+            return "%s; %d of %d toe circles valid" % (v.circle, v.n_valid, v.n_tried)
+        return "T = %.1f kN/m, N = %.1f kN/m%s" % (v.shear, v.normal, extra)
 
-def _note(v, extra=""):
-    if isinstance(v, str):
-        return "failed: " + v
-    if hasattr(v, "circle"):  # SearchResult
-        return "%s; %d of %d toe circles valid" % (v.circle, v.n_valid, v.n_tried)
-    return "T = %.1f kN/m, N = %.1f kN/m%s" % (v.shear, v.normal, extra)
-
-
-beta = math.atan2(surface[2][1] - surface[1][1], surface[2][0] - surface[1][0])
-rows = [("RBSM contact forces, slip polyline", fs.fs, "T = %.1f kN/m, N = %.1f kN/m, %d joints (Table 2)"
-         % (fs.shear, fs.normal, fs.n_joints))]
-if found is not None:
-    rows.append(("RBSM contact forces, found surface", found[1].fs, "T = %.1f kN/m, N = %.1f kN/m, %d joints"
-                 % (found[1].shear, found[1].normal, found[1].n_joints)))
-    rows.append(("Fellenius, found surface", found[2] if isinstance(found[2], str) else found[2].fs,
-                 found[2] if isinstance(found[2], str) else "T = %.1f kN/m, N = %.1f kN/m" % (found[2].shear, found[2].normal)))
-if sr is not None:
-    rows.append(("RBSM strength reduction", sr.fs, "bracket [%.3f stable, %.3f failed], %d trials"
-                 % (sr.lo, sr.hi, len(sr.trials))))
-else:
-    rows.append(("RBSM strength reduction", None, "not run (--strength-reduction)"))
-for k, v in lem.items():
-    rows.append((k, _fs(v), _note(v, ", " + str(v.surface) if k.endswith(", circle") and not isinstance(v, str) else "")))
-rows += [("closed form: planar wedge tan(phi)/tan(psi)", math.tan(phi) / math.tan(psi), "psi = 35 deg, no crack thrust"),
-         ("closed form: infinite slope tan(phi)/tan(beta)", math.tan(phi) / math.tan(beta),
-          "face beta = %.1f deg (shallowest mechanism)" % math.degrees(beta)),
-         ("seed paper: RBSM", 0.72, "Table 2"), ("seed paper: Fellenius", 0.63, "Table 2")]
-print(safety.fs_table(rows))
-print("wall time %.1f s" % (time.time() - t_wall))
+    beta = math.atan2(surface[2][1] - surface[1][1], surface[2][0] - surface[1][0])
+    rows = [("RBSM contact forces, slip polyline", fs.fs, "T = %.1f kN/m, N = %.1f kN/m, %d joints (Table 2)"
+             % (fs.shear, fs.normal, fs.n_joints))]
+    if found is not None:
+        rows.append(("RBSM contact forces, found surface", found[1].fs, "T = %.1f kN/m, N = %.1f kN/m, %d joints"
+                     % (found[1].shear, found[1].normal, found[1].n_joints)))
+        rows.append(("Fellenius, found surface", found[2] if isinstance(found[2], str) else found[2].fs,
+                     found[2] if isinstance(found[2], str) else "T = %.1f kN/m, N = %.1f kN/m" % (found[2].shear, found[2].normal)))
+    if sr is not None:
+        rows.append(("RBSM strength reduction", sr.fs, "bracket [%.3f stable, %.3f failed], %d trials"
+                     % (sr.lo, sr.hi, len(sr.trials))))
+    else:
+        rows.append(("RBSM strength reduction", None, "not run (--strength-reduction)"))
+    for k, v in lem.items():
+        rows.append((k, _fs(v), _note(v, ", " + str(v.surface) if k.endswith(", circle") and not isinstance(v, str) else "")))
+    rows += [("closed form: planar wedge tan(phi)/tan(psi)", math.tan(phi) / math.tan(psi), "psi = 35 deg, no crack thrust"),
+             ("closed form: infinite slope tan(phi)/tan(beta)", math.tan(phi) / math.tan(beta),
+              "face beta = %.1f deg (shallowest mechanism)" % math.degrees(beta)),
+             ("seed paper: RBSM", 0.72, "Table 2"), ("seed paper: Fellenius", 0.63, "Table 2")]
+    print(safety.fs_table(rows))
+    print("wall time %.1f s" % (time.time() - t_wall))

@@ -14,6 +14,7 @@ PACKAGES=(
   valgrind                              # benchmarks: instruction counts (callgrind; scripts/benchmarks/)
   libgl-dev                             # the qt view's functors (Gl1_*) draw with OpenGL
   xvfb python3-pil                      # GUI tests (tests/gui, scripts/run_in_qt_view.py): virtual X display, PNG pixels
+  openmpi-bin python3-mpi4py            # distributed runs with yade.mpy (mpiexec; tests/mpi/)
 )
 
 if [ "$(id -u)" -eq 0 ]; then

@@ -174,6 +174,13 @@ Real RbsmTimeStepper::blockDt(size_t id) const
 	return 2 / w / (std::hypot(Real(1), xi) + xi);
 }
 
+// Under yade.mpy a worker (Scene.subdomain > 0) holds its own blocks and copies of its neighbours'
+// blocks near its border; NewtonIntegrator moves only its own, and only they have all their joints on
+// this rank (a copy's joints with blocks this rank does not hold are computed elsewhere). So the step
+// and the motion checks are taken over its own blocks: the union over the ranks is the serial scene.
+// The master (subdomain 0) and a serial or merged scene own every block.
+bool RbsmTimeStepper::ownedHere(const Body& b) const { return scene->subdomain == 0 || b.subdomain == scene->subdomain; }
+
 void RbsmTimeStepper::boundsHold(size_t nBodies)
 {
 	if (rowBounds.size() < kRow * nBodies) rowBounds.resize(kRow * nBodies, 0);
@@ -237,7 +244,8 @@ Real RbsmTimeStepper::estimate()
 		const size_t id         = size_t(dynIds[b]);
 		rowBounds[kRow * id] = omega2[b];
 		if (densityScaling) rowDiag[id] = diag2[b];
-		const Real dt           = blockDt(id);
+		if (!ownedHere(*bodies[id])) continue;
+		const Real dt = blockDt(id);
 		if (dt < criticalDt) criticalDt = dt, criticalBody = int(id);
 	}
 	return criticalDt;
@@ -267,6 +275,7 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 				rowBounds[kRow * id + 1] += p.dampingCoefficient * area;
 				rowBounds[kRow * id + 2] += std::min(p.kn, p.ks) * area;
 			}
+			if (!ownedHere(*bodies[id])) continue;
 			const Real dt = blockDt(size_t(id));
 			if (dt < criticalDt || !(criticalDt < inf)) {
 				if (dt < inf) criticalDt = dt, criticalBody = id;
@@ -325,7 +334,8 @@ Real RbsmTimeStepper::firstContactEstimate() const
 		const State& s = *scene->bodies->body[size_t(k.id)]->state;
 		// a block with joints is bounded by them (a bonded sliver is not assumed to meet another
 		// sliver); a joint it makes later is added at the step it is made
-		if (isFixed(s) || (size_t(kRow * k.id) < rowBounds.size() && rowBounds[kRow * k.id] > 0)) continue;
+		if (isFixed(s) || !ownedHere(*scene->bodies->body[size_t(k.id)]) || (size_t(kRow * k.id) < rowBounds.size() && rowBounds[kRow * k.id] > 0))
+			continue;
 		const Real partnerN = bestN[0].id != k.id ? bestN[0].value : bestN[1].value;
 		const Real partnerS = bestS[0].id != k.id ? bestS[0].value : bestS[1].value;
 		if (!std::isfinite(partnerN) || !std::isfinite(partnerS)) continue; // nothing to meet
@@ -405,7 +415,7 @@ Real RbsmTimeStepper::checkMotion()
 		if (!b) continue;
 		const Polygon2D* poly = polygonOf(*b);
 		const State&     s    = *b->state;
-		if (!poly || isFixed(s)) continue;
+		if (!poly || isFixed(s) || !ownedHere(*b)) continue;
 		if (size_t(b->id) >= inradius.size()) inradius.resize(size_t(b->id) + 1, 0);
 		Real& r = inradius[b->id];
 		if (!(r > 0)) r = rbsm::centroidInradius(poly->vertices);
@@ -440,12 +450,16 @@ void RbsmTimeStepper::keepBoundsAhead()
 	for (const auto& b : bodies) {
 		if (!b || !b->bound) continue;
 		const Polygon2D* poly = polygonOf(*b);
-		if (!poly) continue;
+		if (!poly || !ownedHere(*b)) continue;
 		const State& st = *b->state;
 		Real         c, s;
 		planarCosSin(st.ori, c, s);
 		BoundPose& ref = boundPose[size_t(b->id)];
 		if (b->bound->lastUpdateIter == scene->iter) ref = BoundPose { scene->iter, c, s }; // the collider ran this step
+		else if (b->bound->lastUpdateIter == scene->iter - 1 && ref.iter != scene->iter - 1)
+			// made after this engine ran in the last step, so after its integration: yade.mpy runs its
+			// collider at the end of a step. Nothing has moved since; the pose is the one the box saw.
+			ref = BoundPose { scene->iter - 1, c, s };
 		if (runCollider) continue;
 		if (ref.iter != b->bound->lastUpdateIter) { // a box made while this engine was not watching
 			runCollider = true;
@@ -473,8 +487,23 @@ Real RbsmTimeStepper::limit()
 	return stableDt();
 }
 
+// A refused step: thrown, or under yade.mpy (deferErrors) kept for the sync engine that follows, which
+// stops every rank before NewtonIntegrator (a throw here would stop this rank alone and leave the others
+// waiting for it in their next exchange).
+void RbsmTimeStepper::refuse(const std::string& message)
+{
+	if (!deferErrors) throw std::runtime_error(message);
+	error = message;
+}
+
 void RbsmTimeStepper::action()
 {
+	if (!error.empty()) { // a deferred refusal that no sync engine took: the step it refused has run
+		std::string message;
+		std::swap(message, error);
+		throw std::runtime_error(message + " [deferErrors is set but no yade_rbsm.mpi sync engine follows RbsmTimeStepper: use yade_rbsm.engines(mpi=True)]");
+	}
+	stepDt = std::numeric_limits<Real>::infinity();
 	// in every step: the one serial place of an RBSM step that sees a VTKRecorder added to O.engines
 	// (first: also in a step that a bad block below ends early, since the recorder would still run)
 	vtkRecorderGuard.check(*scene);
@@ -515,18 +544,18 @@ void RbsmTimeStepper::action()
 	if (std::isnan(limit) || limit <= 0) {
 		msg << "the stable time step is " << limit << " s at step " << scene->iter << " (joints of body #" << criticalBody
 		    << "): a joint is infinitely stiff or damped (Poisson's ratio at 0.5 in plane strain? dampingRatio?); the step was refused.";
-		throw std::runtime_error(msg.str());
+		return refuse(msg.str());
 	}
+	// The travel limit never takes the step below a tenth of the stable one: a block exploding
+	// (thrown at km/s) is reported by checkMotion, not run in slow motion.
+	stepDt = std::min({ limit, maxDt, std::max(travelDt, limit / 10) });
 	if (setDt) {
-		// The travel limit never takes the step below a tenth of the stable one: a block exploding
-		// (thrown at km/s) is reported by checkMotion, not run in slow motion.
-		const Real dt = std::min({ limit, maxDt, std::max(travelDt, limit / 10) });
-		if (std::isfinite(dt)) scene->dt = dt;
+		if (std::isfinite(stepDt)) scene->dt = stepDt;
 		return;
 	}
 	if (!(scene->dt > 0)) {
 		msg << "O.dt = " << scene->dt << " s at step " << scene->iter << ": time would not advance; the step was refused. Set O.dt > 0 or RbsmTimeStepper.setDt=True.";
-		throw std::runtime_error(msg.str());
+		return refuse(msg.str());
 	}
 	// The estimate moves with the geometry by round-off from one step to the next: a step set to
 	// the stable step must not be refused for that (the safety factor is the margin).
@@ -537,7 +566,7 @@ void RbsmTimeStepper::action()
 	msg << " = " << limit << " s; "
 	    << (criticalDt <= firstContactDt ? "the joints of body #" + std::to_string(criticalBody) : std::string("the first contact a block can form"))
 	    << "); the step was refused before integration. Reduce O.dt or set RbsmTimeStepper.setDt=True.";
-	throw std::runtime_error(msg.str());
+	refuse(msg.str());
 }
 
 } // namespace yade

@@ -46,7 +46,11 @@ public:
 		"known before the integration.\n\n"
 		"At every step it also switches off (dead) a :yref:`VTKRecorder` whose recorders (intr, stress, bstresses, all, ...) "
 		"would read the RBSM joints as sphere contacts and crash YADE, and says so (yade_rbsm.vtkexport.recorder records blocks "
-		"and joints instead).",
+		"and joints instead).\n\n"
+		"Under yade.mpy (Scene.subdomain > 0, a worker) it bounds, checks and reports the blocks its rank owns "
+		"(Body.subdomain): they have all their joints there, so the minimum over the ranks of :yref:`stepDt<RbsmTimeStepper.stepDt>` "
+		"is the serial step. yade_rbsm.mpi's sync engine, placed right after this one, sets that minimum on every rank "
+		"and stops every rank when one refuses a step (:yref:`deferErrors<RbsmTimeStepper.deferErrors>`).",
 		((Real, safetyFactor, 0.8, Attr::triggerPostLoad, "Fraction of the stable step allowed (0 < safetyFactor ≤ 1)."))
 		((bool, setDt, false, , "Set O.dt to the stable step (True) or only check it and refuse a larger O.dt (False)."))
 		((int, interval, 100, Attr::triggerPostLoad, "Full estimate every this many steps (the first step always has one); joints made in between are added at once. One full estimate costs about one InteractionLoop pass of the exact geometry (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
@@ -62,15 +66,20 @@ public:
 		((Real, scaledDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "The step density scaling runs at [s] (targetDt, or the median block's step), from the last full estimate."))
 		((std::vector<Real>, massScale, , Attr::readonly, "Per body id: the factor s ≥ 1 applied to its inertia by densityScaling (1: none; empty when off)."))
 		((bool, massScaled, false, Attr::hidden, "densityScaling as of the last step (a switch makes a full estimate at once)."))
+		((bool, deferErrors, false, , "Distributed runs (set by yade_rbsm.engines(mpi=True)): a refused step is not thrown here but kept in :yref:`error<RbsmTimeStepper.error>` (O.dt untouched), and yade_rbsm.mpi's sync engine, which must follow this one, raises it on every rank before NewtonIntegrator. An error still kept when this engine runs again (no sync engine took it) is thrown then."))
+		((std::string, error, "", Attr::noSave, "The refusal kept by :yref:`deferErrors<RbsmTimeStepper.deferErrors>` at this step (empty: none); the sync engine reads and clears it."))
+		((Real, stepDt, std::numeric_limits<Real>::infinity(), (Attr::readonly | Attr::noSave), "The step chosen at the last run [s]: min(stableDt, maxDt, the travel limit of maxStepMotion); what setDt sets (inf: no block of this rank bounds it). Under yade.mpy the sync engine sets O.dt to its minimum over the ranks."))
 		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bound ω² of its rows, the dashpot Σ c·A and the softer spring Σ k·A of its joints since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run).")),
 		/*ctor*/,
 		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the present joints [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
 		.def("limit", &RbsmTimeStepper::limit, "Runs a full estimate of the scene as it is now (joints, first contacts, NewtonIntegrator.damping) and returns :yref:`stableDt<RbsmTimeStepper.stableDt>` [s], the step this engine would allow; what yade_rbsm.critical_time_step() returns at safetyFactor=1.")
+		.def("checkNextStep", &RbsmTimeStepper::checkNextStep, "Makes the next run of this engine a full estimate (as at the first step), e.g. after a scene was merged from yade.mpy's ranks (yade_rbsm.mpi.to_serial), whose joints this engine has not seen.")
 		.add_property("stableDt", &RbsmTimeStepper::stableDt, "The step this engine allows now [s]: safetyFactor × min(criticalDt, firstContactDt) / √(1 + newtonDamping).")
 	);
 	// clang-format on
 	Real stableDt() const;
 	Real limit();
+	void checkNextStep() { lastCheck = -1; }
 
 private:
 	void fullCheck();
@@ -83,6 +92,8 @@ private:
 	Real firstContactEstimate() const;
 	bool jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
 	Real blockDt(size_t id) const; // damped step of body id's rows (rowBounds)
+	bool ownedHere(const Body& b) const; // the block is integrated on this rank (always true outside yade.mpy's workers)
+	void refuse(const std::string& message);
 	void boundsHold(size_t nBodies);
 	// estimate()'s working arrays, kept between calls so that a check allocates nothing once the
 	// scene has grown (not saved; the engine runs on one thread)

@@ -704,9 +704,9 @@ def build_scene(sb, material=None, thickness=1.0):
     return sb.ids
 
 
-def break_crack(sb, tol=None):
+def break_crack(sb, tol=None, counted=None):
     """Break (RbsmPhys.breakJoint) every joint lying on the crack line x = xc above yc. Returns the
-    number of joints broken."""
+    number of joints broken (of those for which *counted*(I) is true, if given)."""
     from yade import O
     if sb.crack is None:
         return 0
@@ -719,7 +719,7 @@ def break_crack(sb, tol=None):
         p0, p1 = I.geom.p0, I.geom.p1
         if abs(p0[0] - xc) <= tol and abs(p1[0] - xc) <= tol and 0.5 * (p0[1] + p1[1]) > yc:
             I.phys.breakJoint()
-            n += 1
+            n += 1 if counted is None or counted(I) else 0
     return n
 
 
@@ -730,11 +730,11 @@ def _seg_dist(p, a, b):
     return math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy)
 
 
-def break_joints(polylines, tol=None):
+def break_joints(polylines, tol=None, counted=None):
     """Break (RbsmPhys.breakJoint) every joint whose contact segment lies on a segment of one of
     the *polylines* (both ends within *tol*, default 1e-6 x the scene size; length > *tol*: corner
     contacts at a point of the polyline stay) with its two blocks on opposite sides of it. Returns
-    the number broken."""
+    the number broken (of those for which *counted*(I) is true, if given)."""
     from yade import O
     segs = [(a, b) for l in polylines for a, b in zip(l[:-1], l[1:])]
     if not segs:
@@ -758,42 +758,54 @@ def break_joints(polylines, tol=None):
             return s1 * s2 < 0
         if any(_seg_dist(p0, a, b) <= tol and _seg_dist(p1, a, b) <= tol and opposite(a, b) for a, b in segs):
             I.phys.breakJoint()
-            n += 1
+            n += 1 if counted is None or counted(I) else 0
     return n
 
 
 def bond_and_break(sb):
     """Bond every initial joint (ip2.setCohesionNow for the first step), take that step, then break
     the joints of the crack (``sb.crack``) and of the crack polylines (``sb.cracks``). Returns
-    (number of joints, number broken)."""
+    (number of joints, number broken). Under yade.mpy call it on every rank after
+    yade_rbsm.mpi.distribute() (the step is then distributed, each rank bonds and breaks its joints,
+    and the counts are of the whole scene)."""
     from yade import O
+    from . import mpi
     ip2 = [f for e in O.engines if hasattr(e, "physDispatcher") for f in e.physDispatcher.functors][0]
     ip2.setCohesionNow = True
-    O.step()
-    nj = sum(1 for I in O.interactions if I.isReal)
-    return nj, break_crack(sb) + break_joints(sb.cracks)
+    if mpi.is_split():
+        mpi.run(1)
+    else:
+        O.step()
+    counted = mpi.counted_here
+    nj = sum(1 for I in O.interactions if I.isReal and counted(I))
+    nb = break_crack(sb, counted=counted) + break_joints(sb.cracks, counted=counted)
+    if mpi.is_split():
+        nj, nb = (int(v) for v in mpi.allreduce_sum([nj, nb]))
+    return nj, nb
 
 
 def unbalanced_ratio(ids=None, gravity=None):
     """Unbalanced-force ratio = mean over free blocks of |contact force + m·g| divided by the mean
     of |m·g| (computed from O.forces.f, the masses and NewtonIntegrator's gravity). 0 at static
-    equilibrium, about 1 for blocks in free fall."""
+    equilibrium, about 1 for blocks in free fall. Collective under yade.mpy (yade_rbsm.mpi): each
+    rank sums over the blocks it integrates."""
     from yade import O
+    from . import mpi
     if gravity is None:
         newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
         gravity = newton.gravity
     gx, gy = gravity[0], gravity[1]
     g = math.hypot(gx, gy)
     num = den = 0.0
-    n = 0
     for b in O.bodies:
-        if b is None or (ids is not None and b.id not in ids) or b.state.blockedDOFs == "xyzXYZ":
+        if b is None or (ids is not None and b.id not in ids) or b.state.blockedDOFs == "xyzXYZ" or not mpi.owned(b):
             continue
         f = O.forces.f(b.id)
         m = b.state.mass
         num += math.hypot(f[0] + m * gx, f[1] + m * gy)
         den += m * g
-        n += 1
+    if mpi.is_split():
+        num, den = mpi.allreduce_sum([num, den])
     return num / den if den > 0 else 0.0
 
 
@@ -802,13 +814,15 @@ def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None, den
     ratio (:func:`unbalanced_ratio`) is below *tol*, checked every *check* steps, or *max_steps*.
     *density_scaling*: RbsmTimeStepper.densityScaling during the stage (the small blocks made heavier
     so that all run at the median block's step: the same equilibrium in fewer steps; the motion on the
-    way is not physical). Restores the previous damping and scaling. Returns (converged, steps, ratio)."""
+    way is not physical). Restores the previous damping and scaling. Returns (converged, steps, ratio).
+    Under yade.mpy every rank calls it (yade_rbsm.mpi.run, and a collective ratio)."""
     from yade import O
     from .checks import count, number  # (here: the geometry above is also loaded without the package)
     tol = number("settle", "tol", tol, 0, low_open=True)
     max_steps, check = count("settle", "max_steps", max_steps), count("settle", "check", check)
     damping = number("settle", "damping", damping, 0, 1, high_open=True)
-    from .scene import advance, time_stepper
+    from .scene import time_stepper
+    from . import mpi
     newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
     old = newton.damping
     newton.damping = damping
@@ -821,7 +835,7 @@ def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None, den
     steps, ratio = 0, float("inf")
     try:
         while steps < max_steps:
-            advance(check)
+            mpi.run(check)
             steps += check
             ratio = unbalanced_ratio()
             if progress:

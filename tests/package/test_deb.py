@@ -55,13 +55,16 @@ def test_file_name_and_metadata(deb):
     # the runtime libraries, found by dpkg-shlibdeps from the plugin's and the module's NEEDED entries
     for lib in ("libboost-python1.74.0", "libboost-serialization1.74.0", "libpython3.11", "libstdc++6", "libc6"):
         assert any(d.startswith(lib) for d in depends), (lib, depends)
-    assert "python3-ezdxf" in field(deb, "Recommends")
+    recommends = [r.strip() for r in field(deb, "Recommends").split(",")]
+    for r in ("python3-ezdxf", "python3-vtk9", "python3-mpi4py", "openmpi-bin"):  # DXF, VTK, distributed runs
+        assert r in recommends, recommends
 
 
 def test_contents(deb):
     files = files_of(deb)
     for f in (PLUGIN, DIST + "/yade_rbsm_tessellation.so", DIST + "/yade_rbsm/__init__.py",
-              DIST + "/yade_rbsm/blocks.py", DIST + "/yade_rbsm/io/__init__.py", "./usr/share/doc/yade-rbsm/copyright"):
+              DIST + "/yade_rbsm/blocks.py", DIST + "/yade_rbsm/mpi.py", DIST + "/yade_rbsm/io/__init__.py",
+              "./usr/share/doc/yade-rbsm/copyright"):
         assert f in files, (f, files)
     assert not [f for f in files if "__pycache__" in f or f.endswith(".pyc")], files
     # nothing outside YADE's plugin directory, Python's dist-packages and the package's doc
