@@ -44,31 +44,11 @@ import math
 from dataclasses import dataclass
 
 from .checks import count, number
+from .geometry import check_polyline, circle_through, height_above as _side, interp_y, point_polyline_distance
 
 __all__ = ["ContactFS", "contact_fs", "contact_fs_circle", "SlipSurface", "slipping_surface", "slip_surface_fs",
            "point_polyline_distance", "table2", "le_slope", "circle_through", "limit_equilibrium_summary",
            "fs_table", "check_polyline", "probe_slipping_surface"]
-
-
-def point_polyline_distance(p, poly):
-    best = float("inf")
-    for (xa, ya), (xb, yb) in zip(poly[:-1], poly[1:]):
-        dx, dy = xb - xa, yb - ya
-        L2 = dx * dx + dy * dy
-        t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((p[0] - xa) * dx + (p[1] - ya) * dy) / L2))
-        best = min(best, math.hypot(p[0] - xa - t * dx, p[1] - ya - t * dy))
-    return best
-
-
-def _side(p, poly):
-    """> 0 if p is above the polyline (vertical offset, constant extrapolation beyond its ends)."""
-    xs = [q[0] for q in poly]
-    x = min(max(p[0], xs[0]), xs[-1])
-    for (xa, ya), (xb, yb) in zip(poly[:-1], poly[1:]):
-        if xa <= x <= xb:
-            y = ya if xb == xa else ya + (x - xa) * (yb - ya) / (xb - xa)
-            return p[1] - y
-    return 0.0
 
 
 @dataclass
@@ -83,23 +63,6 @@ class ContactFS:
 
     def row(self, label="Present method (RBSM)"):
         return (label, self.shear, self.normal, self.fs)
-
-
-def check_polyline(surface, name="slip surface"):
-    """The polyline as float pairs: at least 2 finite points with strictly increasing x."""
-    if surface is None:
-        raise ValueError("%s: none given" % name)
-    try:
-        poly = [(float(x), float(y)) for x, y in surface]
-    except (TypeError, ValueError):
-        raise ValueError("%s must be a sequence of (x, y) pairs" % name) from None
-    if len(poly) < 2:
-        raise ValueError("%s needs at least 2 points, got %d%s" % (name, len(poly), " (empty list)" if not poly else ""))
-    if not all(math.isfinite(c) for p in poly for c in p):
-        raise ValueError("%s contains NaN or inf" % name)
-    if any(b[0] <= a[0] for a, b in zip(poly[:-1], poly[1:])):
-        raise ValueError("%s: x must be strictly increasing" % name)
-    return poly
 
 
 def contact_fs(surface, tol=None, O=None, allow_empty=False):
@@ -367,19 +330,18 @@ def _extend_to_ground(poly, ground):
     """Extend the ends of *poly* that lie below the ground polyline along their end segments up to
     the ground (a plane is continued as a plane), or vertically if the end segment does not rise
     towards the ground within the slope's extent."""
-    from .slope import _interp_y
     out = list(poly)
     x0, xn = ground[0][0], ground[-1][0]
     for end in (0, -1):
         p = out[end]
         q = out[1] if end == 0 else out[-2]
-        if p[1] >= _interp_y(ground, p[0]):
+        if p[1] >= interp_y(ground, p[0]):
             continue
         dx, dy = p[0] - q[0], p[1] - q[1]
         hit = None
         if dx != 0:
             def below(m):
-                return p[1] + m * dy < _interp_y(ground, p[0] + m * dx)
+                return p[1] + m * dy < interp_y(ground, p[0] + m * dx)
             lo, hi = 0.0, 1.0
             while below(hi) and x0 < p[0] + hi * dx < xn and hi < 1e6:
                 hi *= 2
@@ -466,17 +428,6 @@ def le_slope(surface, material=None, c=None, phi=None, density=None, g=9.81):
     density = number("le_slope", "density", density, 0, low_open=True)
     return le.Slope([(float(x), float(y)) for x, y in surface],
                     le.Layer(c=c / 1e3, phi=math.degrees(phi), gamma=density * g / 1e3, name="blocks"))
-
-
-def circle_through(a, b, c):
-    """(xc, yc, R) of the circle through three points."""
-    (ax, ay), (bx, by), (cx, cy) = a, b, c
-    d = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
-    if d == 0:
-        raise ValueError("circle_through: collinear points")
-    ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay) + (cx * cx + cy * cy) * (ay - by)) / d
-    uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx) + (cx * cx + cy * cy) * (bx - ax)) / d
-    return ux, uy, math.hypot(ax - ux, ay - uy)
 
 
 def limit_equilibrium_summary(slope, circle=None, polyline=None, toe=None, search=None, n=50):
