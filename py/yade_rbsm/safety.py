@@ -44,6 +44,7 @@ import math
 from dataclasses import dataclass
 
 from .checks import count, number
+from . import omega
 from .geometry import check_polyline, circle_through, height_above as _side, interp_y, point_polyline_distance
 
 __all__ = ["ContactFS", "contact_fs", "contact_fs_circle", "SlipSurface", "slipping_surface", "slip_surface_fs",
@@ -81,10 +82,8 @@ def contact_fs(surface, tol=None, O=None, allow_empty=False):
     direction = 1.0 if poly[-1][1] < poly[0][1] else -1.0  # sliding towards +x or -x
     N = T = R = L = 0.0
     used = []
-    for I in O.interactions:
-        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
-            continue
-        g, ph = I.geom, I.phys
+    for I in omega.joints(O):
+        g = I.geom
         p0, p1 = (g.p0[0], g.p0[1]), (g.p1[0], g.p1[1])
         if point_polyline_distance(p0, poly) > tol or point_polyline_distance(p1, poly) > tol:
             continue
@@ -148,9 +147,7 @@ def contact_fs_circle(circle, band=None, O=None):
     if not (isinstance(band, (int, float)) and math.isfinite(band) and band > 0):
         raise ValueError("contact_fs_circle: band must be a finite number > 0, got %r" % (band,))
     sel = []
-    for I in O.interactions:
-        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
-            continue
+    for I in omega.joints(O):
         g = I.geom
         mx, my = 0.5 * (g.p0[0] + g.p1[0]), 0.5 * (g.p0[1] + g.p1[1])
         if abs(math.hypot(mx - xc, my - yc) - Rc) > band:
@@ -166,9 +163,7 @@ def contact_fs_circle(circle, band=None, O=None):
                          "band %g m with its blocks on opposite sides" % (xc, yc, Rc, band))
     # rotation sense of the sliding mass: moment of the weights of the free blocks inside
     moment = 0.0
-    for b in O.bodies:
-        if b is None or b.state.blockedDOFs == "xyzXYZ":
-            continue
+    for b in omega.free_bodies(O):
         p = b.state.pos
         if math.hypot(p[0] - xc, p[1] - yc) < Rc:
             moment += b.state.mass * (p[0] - xc)
@@ -189,6 +184,12 @@ def contact_fs_circle(circle, band=None, O=None):
     return ContactFS(fs, N / 1e3, T / 1e3, R / 1e3, len(used), L, used)
 
 
+def _median_joint_length(O):
+    """Median length of the scene's joints of non-zero length (the upper one of an even count)."""
+    la = sorted(I.geom.length for I in omega.joints(O) if I.geom.length > 0)
+    return la[len(la) // 2]
+
+
 @dataclass
 class SlipSurface:
     polyline: list  # [(x, y), ...], increasing x
@@ -207,9 +208,7 @@ def slipping_surface(O=None, tol=None, min_slipping=1, joints=None):
     if O is None:
         from yade import O
     segs = []
-    for I in O.interactions:
-        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
-            continue
+    for I in omega.joints(O):
         if (I.phys.nSlipping < min_slipping) if joints is None else ((I.id1, I.id2) not in joints):
             continue
         g = I.geom
@@ -222,9 +221,7 @@ def slipping_surface(O=None, tol=None, min_slipping=1, joints=None):
     if not segs:
         return None
     if tol is None:  # half the median length of all joints of the scene
-        la = sorted(I.geom.length for I in O.interactions if I.isReal and type(I.phys).__name__ == "RbsmPhys"
-                    and I.geom.length > 0)
-        tol = 0.5 * la[len(la) // 2]
+        tol = 0.5 * _median_joint_length(O)
     parent = list(range(len(segs)))
 
     def find(i):
@@ -308,19 +305,15 @@ def probe_slipping_surface(steps=500, damping=0.0, check=20, O=None, **kw):
     mark = "rbsm_slip_probe"
     O.saveTmp(mark)
     try:
-        for e in O.engines:
-            if type(e).__name__ == "PyRunner":
-                e.dead = True
-            if type(e).__name__ == "NewtonIntegrator":
-                e.damping = damping
+        omega.switch_off_pyrunners(O)
+        omega.newton(O).damping = damping
         seen = set()
         done = 0
         while done < steps:
             k = min(check, steps - done)
             advance(int(k))
             done += k
-            seen.update((I.id1, I.id2) for I in O.interactions
-                        if I.isReal and type(I.phys).__name__ == "RbsmPhys" and I.phys.nSlipping > 0)
+            seen.update((I.id1, I.id2) for I in omega.joints(O) if I.phys.nSlipping > 0)
         return slipping_surface(O=O, joints=seen, **kw)
     finally:
         O.loadTmp(mark)
@@ -380,9 +373,7 @@ def slip_surface_fs(surface=None, ground=None, material=None, g=9.81, n=50, O=No
     if len(ss.polyline) < 2:
         raise ValueError("slip_surface_fs: the slipping surface is a single point")
     if tol is None:  # the blocks have moved a little along the surface since it was found
-        la = sorted(I.geom.length for I in O.interactions if I.isReal and type(I.phys).__name__ == "RbsmPhys"
-                    and I.geom.length > 0)
-        tol = 0.1 * la[len(la) // 2]
+        tol = 0.1 * _median_joint_length(O)
     fs = contact_fs(ss.polyline, O=O, tol=tol)
     fel = None
     if slope is None and ground is not None and material is not None:

@@ -472,9 +472,7 @@ def break_joints(polylines, tol=None):
         size = max(max(abs(c) for s in segs for p in s for c in p), 1.0)
         tol = 1e-6 * size
     n = 0
-    for I in O.interactions:
-        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
-            continue
+    for I in _sibling("omega").joints(O):
         p0, p1 = (I.geom.p0[0], I.geom.p0[1]), (I.geom.p1[0], I.geom.p1[1])
         if math.hypot(p1[0] - p0[0], p1[1] - p0[1]) <= tol:
             continue
@@ -496,8 +494,7 @@ def bond_and_break(sb):
     the joints of the crack (``sb.crack``) and of the crack polylines (``sb.cracks``). Returns
     (number of joints, number broken)."""
     from yade import O
-    ip2 = [f for e in O.engines if hasattr(e, "physDispatcher") for f in e.physDispatcher.functors][0]
-    ip2.setCohesionNow = True
+    _sibling("omega").ip2(O).setCohesionNow = True
     O.step()
     nj = sum(1 for I in O.interactions if I.isReal)
     return nj, break_crack(sb) + break_joints(sb.cracks)
@@ -509,8 +506,7 @@ def unbalanced_ratio(ids=None, gravity=None):
     equilibrium, about 1 for blocks in free fall."""
     from yade import O
     if gravity is None:
-        newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
-        gravity = newton.gravity
+        gravity = _sibling("omega").newton(O).gravity
     gx, gy = gravity[0], gravity[1]
     g = math.hypot(gx, gy)
     num = den = 0.0
@@ -536,7 +532,7 @@ def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None):
     max_steps, check = count("settle", "max_steps", max_steps), count("settle", "check", check)
     damping = number("settle", "damping", damping, 0, 1, high_open=True)
     from .scene import advance
-    newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
+    newton = _sibling("omega").newton(O)
     old = newton.damping
     newton.damping = damping
     steps, ratio = 0, float("inf")
