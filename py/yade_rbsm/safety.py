@@ -201,6 +201,51 @@ class SlipSurface:
             len(self.joints), self.length, " ".join("(%.2f, %.2f)" % p for p in self.polyline))
 
 
+def _segments_distance(a, b):
+    """Distance between the segments a = (p, q, ...) and b, which do not cross (joints)."""
+    return min(point_polyline_distance(a[0], [b[0], b[1]]), point_polyline_distance(a[1], [b[0], b[1]]),
+               point_polyline_distance(b[0], [a[0], a[1]]), point_polyline_distance(b[1], [a[0], a[1]]))
+
+
+def _largest_linked_set(segs, tol):
+    """Indices (increasing) of the largest set, by total length ``seg[3]``, of segments linked by
+    coming within *tol* of each other (connected components, scipy.sparse.csgraph); on a tie the
+    set with the least index."""
+    import numpy as np
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    n = len(segs)
+    pairs = [(i, j) for i in range(n) for j in range(i + 1, n) if _segments_distance(segs[i], segs[j]) <= tol]
+    ij = np.array(pairs, dtype=int).reshape(-1, 2)
+    _, labels = connected_components(coo_matrix((np.ones(len(ij)), (ij[:, 0], ij[:, 1])), shape=(n, n)), directed=False)
+    groups = {}
+    for k in range(n):
+        groups.setdefault(labels[k], []).append(k)
+    return max(groups.values(), key=lambda g: sum(segs[k][3] for k in g))
+
+
+def _shortest_path(adj, src, dst):
+    """Dijkstra from *src* to *dst* over ``adj = {node: [(node, length), ...]}``: the nodes of the
+    path, [dst] alone if dst is not reached."""
+    import heapq
+    dist, prev, heap = {src: 0.0}, {}, [(0.0, src)]
+    while heap:
+        d, a = heapq.heappop(heap)
+        if a == dst or d > dist.get(a, float("inf")):
+            if a == dst:
+                break
+            continue
+        for b, w in adj[a]:
+            if d + w < dist.get(b, float("inf")):
+                dist[b], prev[b] = d + w, a
+                heapq.heappush(heap, (d + w, b))
+    path = [dst]
+    while path[-1] != src and path[-1] in prev:
+        path.append(prev[path[-1]])
+    path.reverse()
+    return path
+
+
 def slipping_surface(O=None, tol=None, min_slipping=1, joints=None):
     """The surface of slipping joints of the current state (module docstring); None if no joint
     slips. *joints*: a set of (id1, id2) to use instead of the joints slipping now (e.g. those that
@@ -222,28 +267,9 @@ def slipping_surface(O=None, tol=None, min_slipping=1, joints=None):
         return None
     if tol is None:  # half the median length of all joints of the scene
         tol = 0.5 * _median_joint_length(O)
-    parent = list(range(len(segs)))
-
-    def find(i):
-        while parent[i] != i:
-            parent[i] = parent[parent[i]]
-            i = parent[i]
-        return i
-
-    def sdist(a, b):
-        return min(point_polyline_distance(a[0], [b[0], b[1]]), point_polyline_distance(a[1], [b[0], b[1]]),
-                   point_polyline_distance(b[0], [a[0], a[1]]), point_polyline_distance(b[1], [a[0], a[1]]))
-    for i in range(len(segs)):
-        for j in range(i + 1, len(segs)):
-            if sdist(segs[i], segs[j]) <= tol:
-                parent[find(i)] = find(j)
-    groups = {}
-    for k in range(len(segs)):
-        groups.setdefault(find(k), []).append(k)
-    best = max(groups.values(), key=lambda g: sum(segs[k][3] for k in g))
-    # the surface through the set: shortest path (Dijkstra, by length) over the joints and the gaps
-    # (<= tol) between their ends, from the end point of least x to the end point of greatest x
-    import heapq
+    best = _largest_linked_set(segs, tol)
+    # the surface through the set: shortest path (by length) over the joints and the gaps (<= tol)
+    # between their ends, from the end point of least x to the end point of greatest x
     nodes = [p for k in best for p in segs[k][:2]]
     adj = {i: [] for i in range(len(nodes))}
     for m, k in enumerate(best):
@@ -258,21 +284,7 @@ def slipping_surface(O=None, tol=None, min_slipping=1, joints=None):
                     adj[b].append((a, d))
     src = min(range(len(nodes)), key=lambda i: (nodes[i][0], nodes[i][1]))
     dst = max(range(len(nodes)), key=lambda i: (nodes[i][0], nodes[i][1]))
-    dist, prev, heap = {src: 0.0}, {}, [(0.0, src)]
-    while heap:
-        d, a = heapq.heappop(heap)
-        if a == dst or d > dist.get(a, float("inf")):
-            if a == dst:
-                break
-            continue
-        for b, w in adj[a]:
-            if d + w < dist.get(b, float("inf")):
-                dist[b], prev[b] = d + w, a
-                heapq.heappush(heap, (d + w, b))
-    path = [dst]
-    while path[-1] != src and path[-1] in prev:
-        path.append(prev[path[-1]])
-    path.reverse()
+    path = _shortest_path(adj, src, dst)
     on_path = {best[i // 2] for i in path}
     best = [k for k in best if k in on_path]
     dx = 1e-6 * max(1.0, max(abs(c) for i in path for c in nodes[i]))
