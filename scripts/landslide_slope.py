@@ -55,6 +55,10 @@ from yade_rbsm import slope as sl, safety, snapshots, vtkexport
 from yade_rbsm.monitor import Monitor
 from yade_rbsm.strength_reduction import strength_reduction
 
+# the seed paper's own figures (Table 2: driving shear T and normal force N along the slip surface,
+# kN/m, and FS), printed next to this run's for comparison
+SEED_TABLE2 = [("seed paper: RBSM", 217.0, 271.0, 0.72), ("seed paper: Fellenius", 231.0, 253.0, 0.63)]
+
 ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 ap.add_argument("--density-units", choices=["kgf", "si"], default="kgf")
 ap.add_argument("--out", default="out/landslide")
@@ -187,7 +191,7 @@ search = None if args.no_search else dict(x_range=(toe - 6 * scale, crestx + 6 *
                                           nx=16, ny=16, refine=2)
 lem = safety.limit_equilibrium_summary(slope_le, circle=circle, polyline=slip, toe=(toe, y0), search=search, n=50)
 fel = lem["Fellenius, slip polyline"]
-print(safety.table2(fs, fel))
+print(safety.table2(fs, fel, reference=SEED_TABLE2))
 crack = [I for I in O.interactions if I.isReal and abs(I.geom.p0[0] - xcrack) < 1e-2 * scale
          and abs(I.geom.p1[0] - xcrack) < 1e-2 * scale and I.geom.p0[1] > ycrack - 1e-2]
 print("crack: %d joints in contact carry a normal force of %.1f kN/m (thrust of the crest mass, "
@@ -215,7 +219,8 @@ if args.probe_steps > 0:
             print("%s (found in an undamped %d-step probe from the state after the gravity stage, state restored; "
                   "%.1f s wall)" % (ss, args.probe_steps, time.time() - t0))
             fel_found = found[2] if not isinstance(found[2], str) else None
-            print(safety.table2(found[1], fel_found, title="Table 2 (surface of slipping joints found by the program)"))
+            print(safety.table2(found[1], fel_found, title="Table 2 (surface of slipping joints found by the program)",
+                               reference=SEED_TABLE2))
             if isinstance(found[2], str):
                 print("  Fellenius along it failed: %s" % found[2])
 snapshots.snapshot(os.path.join(args.out, "landslide_0_before.png"), "after gravity stage, t = 0", O=O, slip=slip)
@@ -290,7 +295,7 @@ for k, v in lem.items():
     rows.append((k, _fs(v), _note(v, ", " + str(v.surface) if k.endswith(", circle") and not isinstance(v, str) else "")))
 rows += [("closed form: planar wedge tan(phi)/tan(psi)", math.tan(phi) / math.tan(psi), "psi = 35 deg, no crack thrust"),
          ("closed form: infinite slope tan(phi)/tan(beta)", math.tan(phi) / math.tan(beta),
-          "face beta = %.1f deg (shallowest mechanism)" % math.degrees(beta)),
-         ("seed paper: RBSM", 0.72, "Table 2"), ("seed paper: Fellenius", 0.63, "Table 2")]
+          "face beta = %.1f deg (shallowest mechanism)" % math.degrees(beta))]
+rows += [(label, fs_seed, "Table 2") for label, _, _, fs_seed in SEED_TABLE2]
 print(safety.fs_table(rows))
 print("wall time %.1f s" % (time.time() - t_wall))

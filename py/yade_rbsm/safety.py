@@ -399,14 +399,15 @@ def slip_surface_fs(surface=None, ground=None, material=None, g=9.81, n=50, O=No
     return ss, fs, fel
 
 
-def table2(rbsm, fellenius=None, title="Table 2 - factor of safety along the slip surface"):
-    """Table 2 of the seed paper: RBSM (a :class:`ContactFS`) next to Fellenius (a
-    limit_equilibrium.Result), plus the seed's own figures for reference."""
+def table2(rbsm, fellenius=None, title="Table 2 - factor of safety along the slip surface", reference=()):
+    """A table like Table 2 of the seed paper: RBSM (a :class:`ContactFS`) next to Fellenius (a
+    limit_equilibrium.Result), then the rows *reference* ``(label, T, N, FS)`` given for comparison
+    (scripts/landslide_slope.py passes the seed paper's own figures)."""
     from .limit_equilibrium import results_table
     rows = [rbsm.row()]
     if fellenius is not None:
         rows.append(("Limit equilibrium (Fellenius)", fellenius.shear, fellenius.normal, fellenius.fs))
-    rows += [("seed paper: RBSM", 217.0, 271.0, 0.72), ("seed paper: Fellenius", 231.0, 253.0, 0.63)]
+    rows += list(reference)
     return results_table(rows, title)
 
 
