@@ -51,7 +51,7 @@ import time
 from yade import O, wrapper
 
 import yade_rbsm as yr
-from yade_rbsm import slope as sl, safety, snapshots, vtkexport
+from yade_rbsm import omega, slope as sl, safety, snapshots, vtkexport
 from yade_rbsm.monitor import Monitor
 from yade_rbsm.strength_reduction import strength_reduction
 
@@ -144,7 +144,7 @@ O.engines = yr.engines(gravity=(0, -9.81, 0), damping=0.7, set_dt=False, enlarge
 O.dt = 1e-6  # bonding step
 nj, nbroken = sl.bond_and_break(sb)
 dtc = yr.critical_time_step()
-ts = [e for e in O.engines if type(e).__name__ == "RbsmTimeStepper"][0]
+ts = omega.engine("timeStepper")
 if args.dt:
     O.dt = args.dt  # the time stepper refuses it if it exceeds its stable limit
 else:
@@ -241,8 +241,7 @@ vtk_series.write()  # t = 0 of the dynamic stage
 vtk_runner = wrapper.PyRunner(command="vtk_series.write()", virtPeriod=args.vtk_every, label="vtkRunner")
 vtk_runner.virtLast = O.time
 O.engines = O.engines + [vtk_runner]
-newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
-newton.damping = 0.0
+omega.newton().damping = 0.0
 nsteps = int(args.time / O.dt)  # O.dt may change a little (time stepper)
 mon.target(nsteps)
 nchunks = 3

@@ -83,7 +83,9 @@ class Monitor:
         setattr(__main__, self.name, self)
         engines = [e for e in O.engines if getattr(e, "label", "") != self.label]
         pr = wrapper.PyRunner(command="%s.record()" % self.name, iterPeriod=self.period, label=self.label)
-        k = next((j for j, e in enumerate(engines) if type(e).__name__ == "NewtonIntegrator"), len(engines))
+        newton = [j for j, e in enumerate(engines) if getattr(e, "label", "") == "newton"
+                  or type(e).__name__ == omega.LABEL_TYPES["newton"]]
+        k = newton[0] if newton else len(engines)
         engines.insert(k, pr)
         O.engines = engines
         return pr
