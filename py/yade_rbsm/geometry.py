@@ -110,6 +110,15 @@ def height_above(p, poly):
     return 0.0
 
 
+def _lerp(u, ua, va, ub, vb):
+    """v at u on the straight line through (ua, va) and (ub, vb), exact at those two points."""
+    if u == ua:
+        return va
+    if u == ub:
+        return vb
+    return va + (u - ua) * (vb - va) / (ub - ua)
+
+
 class Line:
     """One straight segment of a polyline, with exact evaluation at its end vertices."""
 
@@ -118,19 +127,11 @@ class Line:
 
     def y(self, x):
         (xa, ya), (xb, yb) = self.a, self.b
-        if x == xa:
-            return ya
-        if x == xb:
-            return yb
-        return ya + (x - xa) * (yb - ya) / (xb - xa)
+        return _lerp(x, xa, ya, xb, yb)
 
     def x(self, y):
         (xa, ya), (xb, yb) = self.a, self.b
-        if y == ya:
-            return xa
-        if y == yb:
-            return xb
-        return xa + (y - ya) * (xb - xa) / (yb - ya)
+        return _lerp(y, ya, xa, yb, xb)
 
     def side(self, p):
         """> 0 above the line, < 0 below."""
