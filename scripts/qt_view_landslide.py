@@ -51,7 +51,7 @@ O.run(int(args.time / O.dt), True)
 
 # blocks coloured by displacement, light grey at rest to dark grey for the most displaced (the joints'
 # colours stay apart from them), the fixed blocks tan
-free = [b for b in O.bodies if isinstance(b.shape, wrapper.Polygon2D) and b.state.blockedDOFs != "xyzXYZ"]
+free = [b for b in omega.free_bodies() if isinstance(b.shape, wrapper.Polygon2D)]
 dmax = max((b.state.pos - b.state.refPos).norm() for b in free) or 1.0
 for b in O.bodies:
     g = 0.85 - 0.55 * (b.state.pos - b.state.refPos).norm() / dmax

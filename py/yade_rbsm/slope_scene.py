@@ -107,7 +107,7 @@ def unbalanced_ratio(ids=None, gravity=None):
     num = den = 0.0
     n = 0
     for b in O.bodies:
-        if b is None or (ids is not None and b.id not in ids) or b.state.blockedDOFs == "xyzXYZ":
+        if b is None or (ids is not None and b.id not in ids) or omega.is_fixed(b):
             continue
         f = O.forces.f(b.id)
         m = b.state.mass
