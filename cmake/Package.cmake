@@ -23,7 +23,7 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 # The plugin is built against the layout of Debian's YADE 2023.02a binary (yade-interface/): any
 # other upstream version of yade may differ, so the dependency is pinned to that version.
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "yade (>= 2023.02a), yade (<< 2023.02b), libyade (>= 2023.02a), libyade (<< 2023.02b), python3 (>= 3.11), python3 (<< 3.12)")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "yade (>= 2023.02a), yade (<< 2023.02b), libyade (>= 2023.02a), libyade (<< 2023.02b), python3 (>= 3.11), python3 (<< 3.12), python3-scipy")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3-ezdxf, python3-vtk9, python3-mpi4py, openmpi-bin") # DXF, VTK, yade.mpy
 # The runtime libraries (boost, python, gmp ...) from dpkg-shlibdeps; libyade.so lives in YADE's
 # private directory and has no shlibs entry (dpkg-shlibdeps warns), hence the explicit pin above.

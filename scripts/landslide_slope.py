@@ -60,9 +60,13 @@ import time
 from yade import O, wrapper
 
 import yade_rbsm as yr
-from yade_rbsm import slope as sl, safety, snapshots, vtkexport
+from yade_rbsm import omega, slope as sl, safety, snapshots, vtkexport
 from yade_rbsm.monitor import Monitor
 from yade_rbsm.strength_reduction import strength_reduction
+
+# the seed paper's own figures (Table 2: driving shear T and normal force N along the slip surface,
+# kN/m, and FS), printed next to this run's for comparison
+SEED_TABLE2 = [("seed paper: RBSM", 217.0, 271.0, 0.72), ("seed paper: Fellenius", 231.0, 253.0, 0.63)]
 
 ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 ap.add_argument("--density-units", choices=["kgf", "si"], default="kgf")
@@ -193,7 +197,7 @@ if mp is not None:
     rmpi.distribute()
 nj, nbroken = sl.bond_and_break(sb)
 dtc = yr.critical_time_step()
-ts = [e for e in O.engines if type(e).__name__ == "RbsmTimeStepper"][0]
+ts = omega.engine("timeStepper")
 if args.dt:
     O.dt = args.dt  # the time stepper refuses it if it exceeds its stable limit
 else:
@@ -270,7 +274,8 @@ if master:  # post-processing: rank 0 holds the merged scene
                 print("%s (found in an undamped %d-step probe from the state after the gravity stage, state restored; "
                       "%.1f s wall)" % (ss, args.probe_steps, time.time() - t0))
                 fel_found = found[2] if not isinstance(found[2], str) else None
-                print(safety.table2(found[1], fel_found, title="Table 2 (surface of slipping joints found by the program)"))
+                print(safety.table2(found[1], fel_found, title="Table 2 (surface of slipping joints found by the program)",
+                                   reference=SEED_TABLE2))
                 if isinstance(found[2], str):
                     print("  Fellenius along it failed: %s" % found[2])
     snapshots.snapshot(os.path.join(args.out, "landslide_0_before.png"), "after gravity stage, t = 0", O=O, slip=slip)

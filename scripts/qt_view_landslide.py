@@ -19,7 +19,7 @@ import sys
 from yade import O, wrapper
 
 import yade_rbsm as yr
-from yade_rbsm import gui, slope as sl
+from yade_rbsm import gui, omega, slope as sl
 
 ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 # yade runs a script in its own globals: __file__ is yade's launcher, sys.argv[0] this script
@@ -46,12 +46,12 @@ O.engines = yr.engines(gravity=(0, -9.81, 0), set_dt=False, enlarge=0.01)
 O.dt = 1e-6  # the bonding step
 sl.bond_and_break(sb)
 O.dt = 0.8 * yr.critical_time_step() * (1 - 1e-9)
-[e for e in O.engines if type(e).__name__ == "RbsmTimeStepper"][0].setDt = True  # follows the joints as they change
+omega.engine("timeStepper").setDt = True  # follows the joints as they change
 O.run(int(args.time / O.dt), True)
 
 # blocks coloured by displacement, light grey at rest to dark grey for the most displaced (the joints'
 # colours stay apart from them), the fixed blocks tan
-free = [b for b in O.bodies if isinstance(b.shape, wrapper.Polygon2D) and b.state.blockedDOFs != "xyzXYZ"]
+free = [b for b in omega.free_bodies() if isinstance(b.shape, wrapper.Polygon2D)]
 dmax = max((b.state.pos - b.state.refPos).norm() for b in free) or 1.0
 for b in O.bodies:
     g = 0.85 - 0.55 * (b.state.pos - b.state.refPos).norm() / dmax

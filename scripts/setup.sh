@@ -9,6 +9,7 @@ PACKAGES=(
   libeigen3-dev libboost-python-dev libboost-serialization-dev python3-dev libcgal-dev
   libgtest-dev googletest               # C++ unit tests
   python3-pytest python3-numpy python3-matplotlib python3-vtk9   # Python tests, post-processing
+  python3-scipy                         # yade_rbsm.safety: connected joints (scipy.sparse.csgraph)
   python3-ezdxf                         # yade_rbsm.io: DXF import and export
   dpkg-dev                              # the Debian package: dpkg-shlibdeps (cpack DEB), dpkg-deb
   valgrind                              # benchmarks: instruction counts (callgrind; scripts/benchmarks/)

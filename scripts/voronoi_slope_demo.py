@@ -6,7 +6,7 @@
 import math
 import os
 
-from yade_rbsm import polygon2d, engines
+from yade_rbsm import polygon2d, engines, omega
 from yade_rbsm.snapshots import snapshot
 from yade_rbsm.voronoi import voronoi_tessellation
 
@@ -28,7 +28,7 @@ for b in O.bodies:
     b.state.refPos = b.state.pos  # displacements from here
 O.engines = engines(gravity=(0, -9.81, 0), damping=0.3)  # no contact damping: known instability at the stepper dt (tests/robustness, bug 1)
 # the joints made at the first step are bonded (cohesion and tensile strength); later ones are frictional
-[f for e in O.engines if hasattr(e, "physDispatcher") for f in e.physDispatcher.functors][0].setCohesionNow = True
+omega.ip2().setCohesionNow = True
 O.run(steps, True)
 
 joints = sum(1 for i in O.interactions if i.isReal)

@@ -13,7 +13,8 @@ else:
     from .scene import engines, critical_time_step, advance, time_stepper  # noqa: F401
     from .mixed import mixed_engines  # noqa: F401
 
-# submodules (import them explicitly): slope, safety, snapshots, limit_equilibrium, vtkexport (VTK
+# submodules (import them explicitly): geometry (plane geometry, pure Python), omega (joints, free bodies,
+# engines by label), slope, safety (its parts: contact_safety, slip_surface, le_bridge), snapshots, limit_equilibrium, vtkexport (VTK
 # output, recorder() engine), measure (stress and fabric tensors, extrema: YADE's sphere-only utilities
 # for blocks), textexport (blocks to and from text), gui (qt view, snapshots), monitor (yade.plot
 # series, progress line), strength_reduction (FS by strength reduction)

@@ -3,38 +3,9 @@ import math
 
 from yade import wrapper
 
+from .geometry import polygon_properties, signed_area as _signed_area
+
 __all__ = ["polygon_properties", "polygon2d"]
-
-
-def polygon_properties(vertices):
-    """Area, centroid and polar second moment J about the centroid of a polygon given
-    counter-clockwise (shoelace formulas; J = ∫(x²+y²)dA, m⁴). Coordinates relative to the
-    first vertex keep round-off small far from the origin."""
-    n = len(vertices)
-    ox, oy = vertices[0]
-    a2 = cx = cy = j = 0.0
-    for i in range(n):
-        x0, y0 = vertices[i][0] - ox, vertices[i][1] - oy
-        x1, y1 = vertices[(i + 1) % n][0] - ox, vertices[(i + 1) % n][1] - oy
-        c = x0 * y1 - x1 * y0
-        a2 += c
-        cx += c * (x0 + x1)
-        cy += c * (y0 + y1)
-        j += c * (x0 * x0 + x0 * x1 + x1 * x1 + y0 * y0 + y0 * y1 + y1 * y1)
-    area = a2 / 2.0
-    if area == 0:
-        raise ValueError("degenerate polygon (zero area)")
-    cx, cy = cx / (6 * area), cy / (6 * area)
-    j = j / 12.0 - area * (cx * cx + cy * cy)
-    return area, (cx + ox, cy + oy), j
-
-
-def _signed_area(vertices):
-    """Signed area of a polygon (shoelace, relative to the first vertex); > 0 counter-clockwise."""
-    ox, oy = vertices[0]
-    n = len(vertices)
-    return 0.5 * sum((vertices[i][0] - ox) * (vertices[(i + 1) % n][1] - oy) - (vertices[(i + 1) % n][0] - ox) * (vertices[i][1] - oy)
-                     for i in range(n))
 
 
 def _describe(pts, most=4):

@@ -18,6 +18,8 @@ Stresses follow YADE's sign convention (tension positive, compression negative) 
 """
 import math
 
+from . import omega
+
 __all__ = ["joint_point_forces", "block_stresses", "stress", "fabric_tensor", "aabb_extrema", "porosity"]
 
 
@@ -37,8 +39,8 @@ def _blocks(O, ids=None):
 
 
 def _rbsm_joints(O):
-    for I in O.interactions:
-        if I.isReal and type(I.phys).__name__ == "RbsmPhys" and type(I.geom).__name__ == "RbsmGeom":
+    for I in omega.joints(O):
+        if type(I.geom).__name__ == "RbsmGeom":
             yield I
 
 
@@ -95,7 +97,7 @@ def stress(ids=None, volume=None, O=None):
     O = _O(O)
     blocks = _blocks(O, ids)
     if ids is None:
-        blocks = [b for b in blocks if b.state.blockedDOFs != "xyzXYZ"]
+        blocks = [b for b in blocks if not omega.is_fixed(b)]
     if not blocks:
         raise ValueError("measure.stress: no Polygon2D block among %s" % ("the free bodies" if ids is None else "ids %r" % (list(ids),)))
     M = _moments(O)

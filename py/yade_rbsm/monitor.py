@@ -27,6 +27,8 @@ default), since PyRunner commands run in the script's namespace.
 import math
 import time
 
+from . import omega
+
 __all__ = ["Monitor", "kinetic_energy", "joint_counts"]
 
 
@@ -34,9 +36,7 @@ def kinetic_energy(O=None):
     if O is None:
         from yade import O
     ek = 0.0
-    for b in O.bodies:
-        if b is None or b.state.blockedDOFs == "xyzXYZ":
-            continue
+    for b in omega.free_bodies(O):
         s = b.state
         ek += 0.5 * s.mass * s.vel.squaredNorm() + 0.5 * s.inertia[2] * s.angVel[2] ** 2
     return ek
@@ -47,9 +47,7 @@ def joint_counts(O=None):
     if O is None:
         from yade import O
     ns = no = n = 0
-    for I in O.interactions:
-        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
-            continue
+    for I in omega.joints(O):
         n += 1
         if I.phys.nSlipping > 0:
             ns += 1
@@ -85,7 +83,9 @@ class Monitor:
         setattr(__main__, self.name, self)
         engines = [e for e in O.engines if getattr(e, "label", "") != self.label]
         pr = wrapper.PyRunner(command="%s.record()" % self.name, iterPeriod=self.period, label=self.label)
-        k = next((j for j, e in enumerate(engines) if type(e).__name__ == "NewtonIntegrator"), len(engines))
+        newton = [j for j, e in enumerate(engines) if getattr(e, "label", "") == "newton"
+                  or type(e).__name__ == omega.LABEL_TYPES["newton"]]
+        k = newton[0] if newton else len(engines)
         engines.insert(k, pr)
         O.engines = engines
         return pr

@@ -1,4 +1,5 @@
-"""Slope of RBSM blocks: geometry (pure Python) and scene set-up (YADE).
+"""Slope of RBSM blocks: the block patterns (pure Python; the polygon toolbox they use is
+geometry.py) and, re-exported from slope_scene.py, the scene set-up and run control (YADE).
 
 Geometry
 --------
@@ -34,87 +35,34 @@ from dataclasses import dataclass, field
 from typing import List, Optional, Sequence, Tuple
 
 
+def _sibling(name):
+    """The package's module *name*; when this file is loaded as a plain file (tests without YADE),
+    the file *name*.py beside it."""
+    import importlib
+    if __package__:
+        return importlib.import_module("." + name, __package__)
+    import importlib.util
+    import os
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), name + ".py")
+    spec = importlib.util.spec_from_file_location("rbsm_" + name, path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+# the polygon toolbox lives in geometry.py; its public names stay importable from here
+_geometry = _sibling("geometry")
+(polygon_area, region_area, polygon_centroid, cut_polygons, check_polygon, Line, segment_at, clip, split_by_line,
+ clean, points, monotone, interp_y, point_segment_distance) = (
+    _geometry.polygon_area, _geometry.region_area, _geometry.polygon_centroid, _geometry.cut_polygons,
+    _geometry.check_polygon, _geometry.Line, _geometry.segment_at, _geometry.clip, _geometry.split_by_line,
+    _geometry.clean, _geometry.points,
+    _geometry.monotone, _geometry.interp_y, _geometry.point_segment_distance)
+_interp_y = interp_y  # the name safety.py and tests used
+
 __all__ = ["Block", "SlopeBlocks", "brick_blocks", "column_blocks", "voronoi_slope_blocks", "slope_polygon",
            "cut_polygons", "polygon_area", "region_area", "check_polygon", "build_scene", "bond_and_break",
            "break_crack", "break_joints", "unbalanced_ratio", "settle"]
-
-
-def polygon_area(poly):
-    a = 0.0
-    n = len(poly)
-    for i in range(n):
-        x0, y0 = poly[i]
-        x1, y1 = poly[(i + 1) % n]
-        a += x0 * y1 - x1 * y0
-    return 0.5 * a
-
-
-def region_area(surface, base):
-    """Closed form: area between the ground polyline and y = base (trapezoids)."""
-    return sum(0.5 * ((ya - base) + (yb - base)) * (xb - xa)
-               for (xa, ya), (xb, yb) in zip(surface[:-1], surface[1:]))
-
-
-class _Line:
-    """One straight segment of a polyline, with exact evaluation at its end vertices."""
-
-    def __init__(self, a, b):
-        self.a, self.b = (float(a[0]), float(a[1])), (float(b[0]), float(b[1]))
-
-    def y(self, x):
-        (xa, ya), (xb, yb) = self.a, self.b
-        if x == xa:
-            return ya
-        if x == xb:
-            return yb
-        return ya + (x - xa) * (yb - ya) / (xb - xa)
-
-    def x(self, y):
-        (xa, ya), (xb, yb) = self.a, self.b
-        if y == ya:
-            return xa
-        if y == yb:
-            return xb
-        return xa + (y - ya) * (xb - xa) / (yb - ya)
-
-    def side(self, p):
-        """> 0 above the line, < 0 below."""
-        return p[1] - self.y(p[0])
-
-    def cross(self, p, q):
-        if p[0] == q[0]:
-            return (p[0], self.y(p[0]))
-        if p[1] == q[1]:
-            return (self.x(p[1]), p[1])
-        dp, dq = self.side(p), self.side(q)
-        t = dp / (dp - dq)
-        return (p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]))
-
-
-def _segment_at(poly, xa, xb):
-    """The segment of *poly* containing the strip [xa, xb] (the strip never straddles a kink)."""
-    xm = 0.5 * (xa + xb)
-    for a, b in zip(poly[:-1], poly[1:]):
-        if a[0] <= xm <= b[0]:
-            return _Line(a, b)
-    return None
-
-
-def _clip(poly, line, keep_below, eps):
-    out = []
-    n = len(poly)
-    for i in range(n):
-        p, q = poly[i], poly[(i + 1) % n]
-        sp, sq = line.side(p), line.side(q)
-        if keep_below:
-            sp, sq = -sp, -sq
-        pin, qin = sp >= -eps, sq >= -eps
-        if pin:
-            out.append(p)
-        if (sp > eps and sq < -eps) or (sp < -eps and sq > eps):
-            out.append(line.cross(p, q))
-    # repeated and collinear vertices dropped as for every other cut
-    return _clean(out, eps)
 
 
 @dataclass
@@ -164,7 +112,7 @@ def brick_blocks(surface, base, brick_w, brick_h, joints=(), crack=None, foundat
     brick_w = _number("brick_blocks: brick_w", brick_w)
     brick_h = _number("brick_blocks: brick_h", brick_h)
     if crack is not None:
-        crack = _pts("brick_blocks: crack", [crack], 1)[0]
+        crack = points("brick_blocks: crack", [crack], 1)[0]
     def mono(l):
         return all(b[0] > a[0] for a, b in zip(l[:-1], l[1:]))
     generic = [c for c in cracks if not mono(c)] + [j for j in joints if not mono(j)]
@@ -198,44 +146,27 @@ def brick_blocks(surface, base, brick_w, brick_h, joints=(), crack=None, foundat
             xs.add(float(crack[0]))
         xs = sorted(x for x in xs if x0 <= x <= xn)
         for xa, xb in zip(xs[:-1], xs[1:]):
-            g = _segment_at(surf, xa, xb)
+            g = segment_at(surf, xa, xb)
             if max(g.y(xa), g.y(xb)) <= ya + eps:
                 continue
             rect = [(xa, ya), (xb, ya), (xb, yb), (xa, yb)]
-            piece = _clip(rect, g, True, eps)
+            piece = clip(rect, g, True, eps)
             if not piece:
                 continue
             pieces = [piece]
             for j in joints:
-                ln = _segment_at(j, xa, xb)
+                ln = segment_at(j, xa, xb)
                 if ln is None:
                     continue
-                new = []
-                for p in pieces:
-                    for below in (True, False):
-                        q = _clip(p, ln, below, eps)
-                        if q:
-                            new.append(q)
-                pieces = new
+                pieces = split_by_line(pieces, ln, eps)
             for p in pieces:
                 a = polygon_area(p)
                 if a < min_area:
                     dropped += a
                     continue
                 blocks.append(Block(p, a, False, "slope", r))
-    if generic:
-        rows = {}
-        for b in blocks:
-            rows.setdefault(id(b.vertices), b.row)
-        pieces = cut_polygons([b.vertices for b in blocks], generic, eps)
-        blocks2 = []
-        for p in pieces:
-            a = polygon_area(p)
-            if a < min_area:
-                dropped += a
-                continue
-            blocks2.append(Block(p, a, False, "slope"))
-        blocks = blocks2
+    if generic:  # the rows are lost: the cut pieces are no bricks of one row
+        blocks, dropped = _finish([b.vertices for b in blocks], generic, min_area, (), eps, dropped)
     if layers:
         _assign_layers(blocks, layers)
     slope_area = region_area(surf, base)
@@ -256,13 +187,13 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
     and the walls stand on it at both ends. *joints*, *cracks*, *layers*: as in
     :func:`brick_blocks` (cut with :func:`cut_polygons`)."""
     who = "column_blocks"
-    surf = _monotone("%s: surface" % who, surface)
+    surf = monotone("%s: surface" % who, surface)
     x0, xn = surf[0][0], surf[-1][0]
     if isinstance(base, (int, float)) and not isinstance(base, bool):
         b0 = _number("%s: base" % who, base, positive=False)
         basel = [(x0, b0), (xn, b0)]
     else:
-        basel = _monotone("%s: base polyline" % who, base, strict=False)
+        basel = monotone("%s: base polyline" % who, base, strict=False)
         if basel[0][0] != x0 or basel[-1][0] != xn:
             raise ValueError("%s: the base polyline must run from x = %g to x = %g (the ends of the surface)"
                              % (who, x0, xn))
@@ -274,7 +205,7 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
         block_h = _number("%s: block_h" % who, block_h)
     for (xa, ya), (xb, yb) in zip(basel[:-1], basel[1:]):
         for x, y in ((xa, ya), (xb, yb)):
-            if y >= _interp_y(surf, x):
+            if y >= interp_y(surf, x):
                 raise ValueError("%s: the base must be below the ground (at x = %g)" % (who, x))
     bsegs = [(a, b) for a, b in zip(basel[:-1], basel[1:]) if b[0] > a[0]]
     ytop = max(y for _, y in surf)
@@ -290,9 +221,9 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
     xs = sorted(xs)
     pieces = []
     for xa, xb in zip(xs[:-1], xs[1:]):
-        g = _segment_at(surf, xa, xb)
-        bl = [_Line(a, b) for a, b in bsegs if a[0] <= 0.5 * (xa + xb) <= b[0]][0]
-        quad = _clean([(xa, bl.y(xa)), (xb, bl.y(xb)), (xb, g.y(xb)), (xa, g.y(xa))], eps)
+        g = segment_at(surf, xa, xb)
+        bl = [Line(a, b) for a, b in bsegs if a[0] <= 0.5 * (xa + xb) <= b[0]][0]
+        quad = clean([(xa, bl.y(xa)), (xb, bl.y(xb)), (xb, g.y(xb)), (xa, g.y(xa))], eps)
         if not quad:
             continue
         col = [quad]
@@ -303,14 +234,7 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
                 levels.append(y)
                 y += block_h
             for y in levels:
-                ln = _Line((xa, y), (xb, y))
-                new = []
-                for p in col:
-                    for below in (True, False):
-                        q = _clip(p, ln, below, eps)
-                        if q:
-                            new.append(q)
-                col = new
+                col = split_by_line(col, Line((xa, y), (xb, y)), eps)
         pieces += col
     cuts = joints + cracks + [t for t, _ in layers if t is not None]
     blocks, dropped = _finish(pieces, cuts, min_area, layers)
@@ -320,7 +244,7 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
     if foundation > 0:
         yf = ymin - foundation
         for a, b in bsegs:
-            f = _clean([(a[0], yf), (b[0], yf), b, a], eps)
+            f = clean([(a[0], yf), (b[0], yf), b, a], eps)
             blocks.append(Block(f, polygon_area(f), True, "foundation"))
         if wall > 0:
             for x, xw in ((x0 - wall, x0), (xn, xn + wall)):
@@ -333,20 +257,6 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
             blocks.append(Block(w, polygon_area(w), True, "wall"))
     return SlopeBlocks(blocks, surf, ymin, slope_area, dropped, None, joints, cracks=cracks, layers=layers,
                        polygon=region, pattern="columns")
-
-
-def _voronoi_module():
-    try:
-        from . import voronoi
-        return voronoi
-    except ImportError:  # loaded as a plain file (tests without YADE)
-        import importlib.util
-        import os
-        path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "voronoi.py")
-        spec = importlib.util.spec_from_file_location("rbsm_voronoi", path)
-        mod = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(mod)
-        return mod
 
 
 def voronoi_slope_blocks(surface=None, base=0.0, n=None, spacing=None, seed=0, min_distance=0.0, sites=None,
@@ -367,8 +277,8 @@ def voronoi_slope_blocks(surface=None, base=0.0, n=None, spacing=None, seed=0, m
         xs, ys = [p[0] for p in poly], [p[1] for p in poly]
         surf = [(min(xs), max(ys)), (max(xs), max(ys))]
         base = min(ys)
-        joints = [_pts("%s: joints[%d]" % (who, k), j, 2) for k, j in enumerate(joints)]
-        cracks = [_pts("%s: cracks[%d]" % (who, k), j, 2) for k, j in enumerate(cracks)]
+        joints = [points("%s: joints[%d]" % (who, k), j, 2) for k, j in enumerate(joints)]
+        cracks = [points("%s: cracks[%d]" % (who, k), j, 2) for k, j in enumerate(cracks)]
         layers = _check_layers(layers, min(xs), max(xs)) if layers else []
         slope_area = polygon_area(poly)
     else:
@@ -376,7 +286,7 @@ def voronoi_slope_blocks(surface=None, base=0.0, n=None, spacing=None, seed=0, m
                                                                           foundation, wall, who)
         poly = slope_polygon(surf, base)
         slope_area = region_area(surf, base)
-    vor = _voronoi_module()
+    vor = _sibling("voronoi")
     t = vor.voronoi_tessellation(poly, n=n, spacing=spacing, seed=seed, min_distance=min_distance, sites=sites)
     mean = slope_area / max(1, len(t.blocks))
     if min_area is None:
@@ -398,72 +308,12 @@ def voronoi_slope_blocks(surface=None, base=0.0, n=None, spacing=None, seed=0, m
 # ---------------------------------------------------------------------------------------------
 # input checks
 # ---------------------------------------------------------------------------------------------
-def _pts(name, seq, at_least=1):
-    """List of finite (x, y) float pairs; ValueError naming *name* otherwise."""
-    if seq is None:
-        raise ValueError("%s: none given" % name)
-    try:
-        pts = [(float(x), float(y)) for x, y in seq]
-    except (TypeError, ValueError):
-        raise ValueError("%s must be a sequence of (x, y) pairs, got %r" % (name, seq)) from None
-    if len(pts) < at_least:
-        raise ValueError("%s needs at least %d points, got %d%s" % (name, at_least, len(pts),
-                                                                    " (empty list)" if not pts else ""))
-    if not all(math.isfinite(c) for p in pts for c in p):
-        raise ValueError("%s contains NaN or inf" % name)
-    return pts
-
-
-def _monotone(name, seq, strict=True):
-    pts = _pts(name, seq, 2)
-    bad = [a for a, b in zip(pts[:-1], pts[1:]) if (b[0] <= a[0] if strict else b[0] < a[0])]
-    if bad:
-        raise ValueError("%s: x must be %s increasing (at x = %g)" % (name, "strictly" if strict else "non-decreasingly",
-                                                                        bad[0][0]))
-    return pts
-
-
 def _number(name, v, positive=True, allow_zero=False):
     if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
         raise ValueError("%s must be a finite number, got %r" % (name, v))
     if positive and (v < 0 or (v == 0 and not allow_zero)):
         raise ValueError("%s must be %s 0, got %r" % (name, ">=" if allow_zero else ">", v))
     return float(v)
-
-
-def _seg_intersect(p, q, r, s):
-    """Closed segments pq and rs intersect (touching counts)."""
-    def orient(a, b, c):
-        v = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
-        return (v > 0) - (v < 0)
-
-    def on(a, b, c):
-        return min(a[0], b[0]) <= c[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= c[1] <= max(a[1], b[1])
-    o1, o2, o3, o4 = orient(p, q, r), orient(p, q, s), orient(r, s, p), orient(r, s, q)
-    if o1 != o2 and o3 != o4:
-        return True
-    return ((o1 == 0 and on(p, q, r)) or (o2 == 0 and on(p, q, s)) or (o3 == 0 and on(r, s, p))
-            or (o4 == 0 and on(r, s, q)))
-
-
-def check_polygon(poly, name="slope polygon"):
-    """The vertices of a simple polygon (either orientation) as float pairs; ValueError naming the
-    problem: fewer than 3 vertices, NaN/inf, a repeated vertex, zero area, edges that cross or touch
-    (not simple)."""
-    pts = _pts(name, poly, 3)
-    if len(set(pts)) != len(pts):
-        raise ValueError("%s: repeated vertex" % name)
-    n = len(pts)
-    for i in range(n):
-        for j in range(i + 1, n):
-            if j == i + 1 or (i == 0 and j == n - 1):
-                continue  # adjacent edges share a vertex
-            if _seg_intersect(pts[i], pts[(i + 1) % n], pts[j], pts[(j + 1) % n]):
-                raise ValueError("%s is not simple: edge %d (%g, %g)-(%g, %g) meets edge %d" % (
-                    name, i, pts[i][0], pts[i][1], pts[(i + 1) % n][0], pts[(i + 1) % n][1], j))
-    if polygon_area(pts) == 0:
-        raise ValueError("%s has zero area" % name)
-    return pts
 
 
 def _check_layers(layers, x0, xn):
@@ -479,7 +329,7 @@ def _check_layers(layers, x0, xn):
             if k != len(layers) - 1:
                 raise ValueError("layers[%d]: only the last (top) layer may have no top polyline" % k)
         else:
-            top = _monotone("layers[%d] top polyline" % k, top)
+            top = monotone("layers[%d] top polyline" % k, top)
             if top[0][0] > x0 or top[-1][0] < xn:
                 raise ValueError("layers[%d] top polyline must span the slope, x in [%g, %g]" % (k, x0, xn))
         if mat is None:
@@ -488,35 +338,9 @@ def _check_layers(layers, x0, xn):
     return out
 
 
-def _interp_y(poly, x):
-    """y of the polyline (strictly increasing x) at x, constant beyond its ends."""
-    if x <= poly[0][0]:
-        return poly[0][1]
-    if x >= poly[-1][0]:
-        return poly[-1][1]
-    for a, b in zip(poly[:-1], poly[1:]):
-        if a[0] <= x <= b[0]:
-            return _Line(a, b).y(x)
-    return poly[-1][1]
-
-
-def polygon_centroid(poly):
-    a = cx = cy = 0.0
-    n = len(poly)
-    ox, oy = poly[0]
-    for i in range(n):
-        x0, y0 = poly[i][0] - ox, poly[i][1] - oy
-        x1, y1 = poly[(i + 1) % n][0] - ox, poly[(i + 1) % n][1] - oy
-        c = x0 * y1 - x1 * y0
-        a += c
-        cx += c * (x0 + x1)
-        cy += c * (y0 + y1)
-    return cx / (3 * a) + ox, cy / (3 * a) + oy
-
-
 def _layer_of(layers, c):
     for k, (top, _) in enumerate(layers):
-        if top is None or c[1] < _interp_y(top, c[0]):
+        if top is None or c[1] < interp_y(top, c[0]):
             return k
     return len(layers) - 1
 
@@ -527,98 +351,11 @@ def _assign_layers(blocks, layers):
             b.layer = _layer_of(layers, polygon_centroid(b.vertices))
 
 
-# ---------------------------------------------------------------------------------------------
-# cutting convex blocks along any polyline (joints, cracks, layer boundaries)
-# ---------------------------------------------------------------------------------------------
-def _clean(poly, eps):
-    """Drops repeated vertices (closer than eps) and collinear ones (turn below eps per unit length);
-    [] if fewer than 3 remain."""
-    res = []
-    for p in poly:
-        if not res or (abs(p[0] - res[-1][0]) > eps or abs(p[1] - res[-1][1]) > eps):
-            res.append(p)
-    while len(res) > 1 and abs(res[0][0] - res[-1][0]) <= eps and abs(res[0][1] - res[-1][1]) <= eps:
-        res.pop()
-    changed = True
-    while changed and len(res) >= 3:
-        changed = False
-        for i in range(len(res)):
-            a, b, c = res[i - 1], res[i], res[(i + 1) % len(res)]
-            cr = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0])
-            L = math.hypot(c[0] - a[0], c[1] - a[1])
-            if abs(cr) <= eps * max(L, eps):
-                del res[i]
-                changed = True
-                break
-    return res if len(res) >= 3 else []
-
-
-def _split_convex(poly, a, b, eps):
-    """Split the convex CCW polygon *poly* by the line through the segment a-b if the *segment*
-    reaches into its interior; returns [left, right] or None. The crossing point on an edge is
-    computed from the edge's end points in lexicographic order, so two blocks sharing the edge get
-    bit-identical points."""
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    L = math.hypot(dx, dy)
-
-    def side(p):
-        return (dx * (p[1] - a[1]) - dy * (p[0] - a[0])) / L
-
-    s = [side(p) for p in poly]
-    if max(s) <= eps or min(s) >= -eps:
-        return None
-    n = len(poly)
-    left, right, ts = [], [], []
-    for i in range(n):
-        p, q = poly[i], poly[(i + 1) % n]
-        sp, sq = s[i], s[(i + 1) % n]
-        if sp >= -eps:
-            left.append(p)
-        if sp <= eps:
-            right.append(p)
-        if abs(sp) <= eps:
-            ts.append(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (L * L))
-        if (sp > eps and sq < -eps) or (sp < -eps and sq > eps):
-            (u, su), (v, sv) = sorted([(p, sp), (q, sq)])
-            t = su / (su - sv)
-            x = (u[0] + t * (v[0] - u[0]), u[1] + t * (v[1] - u[1]))
-            left.append(x)
-            right.append(x)
-            ts.append(((x[0] - a[0]) * dx + (x[1] - a[1]) * dy) / (L * L))
-    if not ts or max(ts) <= eps / L or min(ts) >= 1 - eps / L:
-        return None  # the line crosses the block, the segment does not reach it
-    return [q for q in (_clean(left, eps), _clean(right, eps)) if q]
-
-
-def cut_polygons(polys, polylines, eps=None):
-    """Cut convex CCW polygons along polylines (any direction, any number of vertices): every
-    polygon that a segment of a polyline reaches into is split in two by the segment's line (the
-    cut runs across the whole block, so a block containing a kink or an end of the polyline is cut
-    a little beyond it: the extension is an ordinary joint). Pieces stay convex and CCW; blocks on
-    either side of a cut share its end points exactly. Returns the list of pieces."""
-    polys = [list(p) for p in polys]
-    if not polys:
-        return []
-    if eps is None:
-        xs = [p[0] for q in polys for p in q]
-        ys = [p[1] for q in polys for p in q]
-        eps = 1e-12 * max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
-    for line in polylines:
-        for a, b in zip(line[:-1], line[1:]):
-            if a == b:
-                continue
-            out = []
-            for p in polys:
-                r = _split_convex(p, a, b, eps)
-                out.extend(r if r else [p])
-            polys = out
-    return polys
-
-
-def _finish(blocks_v, extra_cuts, min_area, layers):
-    """Cut slope block vertex lists along *extra_cuts*, drop slivers; returns (Blocks, dropped)."""
-    pieces = cut_polygons(blocks_v, extra_cuts) if extra_cuts else blocks_v
-    out, dropped = [], 0.0
+def _finish(blocks_v, extra_cuts, min_area, layers, eps=None, dropped=0.0):
+    """Cut slope block vertex lists along *extra_cuts* (:func:`cut_polygons`, *eps*), drop slivers
+    (their area added to *dropped*); returns (Blocks, dropped)."""
+    pieces = cut_polygons(blocks_v, extra_cuts, eps) if extra_cuts else blocks_v
+    out = []
     for p in pieces:
         a = polygon_area(p)
         if a < min_area:
@@ -632,7 +369,7 @@ def _finish(blocks_v, extra_cuts, min_area, layers):
 
 def slope_polygon(surface, base):
     """The slope region (CCW polygon) under the ground polyline *surface* and above y = *base*."""
-    surf = _monotone("surface", surface)
+    surf = monotone("surface", surface)
     return [(surf[0][0], float(base)), (surf[-1][0], float(base))] + list(reversed(surf))
 
 
@@ -650,12 +387,12 @@ def _fixed_blocks(surf, base, foundation, wall):
 
 
 def _common_args(surface, base, joints, cracks, layers, foundation, wall, who):
-    surf = _monotone("%s: surface" % who, surface)
+    surf = monotone("%s: surface" % who, surface)
     base = _number("%s: base" % who, base, positive=False)
     if any(y <= base for _, y in surf):
         raise ValueError("%s: the ground must be above the base everywhere" % who)
-    joints = [_pts("%s: joints[%d]" % (who, k), j, 2) for k, j in enumerate(joints)]
-    cracks = [_pts("%s: cracks[%d]" % (who, k), j, 2) for k, j in enumerate(cracks)]
+    joints = [points("%s: joints[%d]" % (who, k), j, 2) for k, j in enumerate(joints)]
+    cracks = [points("%s: cracks[%d]" % (who, k), j, 2) for k, j in enumerate(cracks)]
     layers = _check_layers(layers, surf[0][0], surf[-1][0]) if layers else []
     foundation = _number("%s: foundation" % who, foundation, allow_zero=True)
     wall = _number("%s: wall" % who, wall, allow_zero=True)
@@ -672,178 +409,13 @@ def _meets_region(line, surf, base):
         for k in range(65):
             t = k / 64.0
             x, y = a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])
-            if surf[0][0] < x < surf[-1][0] and base < y < _interp_y(surf, x):
+            if surf[0][0] < x < surf[-1][0] and base < y < interp_y(surf, x):
                 return True
     return False
 
 
-# ---------------------------------------------------------------------------------------------
-# scene (needs YADE)
-# ---------------------------------------------------------------------------------------------
-def build_scene(sb, material=None, thickness=1.0):
-    """Append the blocks of *sb* to O.bodies (slope blocks free, foundation and walls fixed); sets
-    ``Block.id`` and ``sb.ids`` and each body's refPos (for displacements). Returns the ids.
-    With layers (``sb.layers``) each slope block takes its layer's material, the fixed blocks
-    *material* (default: the bottom layer's); the joints between layers then take the weaker
-    material (Ip2_RbsmMat_RbsmMat_RbsmPhys)."""
-    from yade import O
-    from .blocks import polygon2d
-    if material is None and not sb.layers:
-        raise ValueError("build_scene: give a material (the blocks have no layers)")
-
-    def mat(b):
-        if sb.layers and not b.fixed:
-            return sb.layers[b.layer][1]
-        return material if material is not None else sb.layers[0][1]
-    bodies = [polygon2d(b.vertices, mat(b), thickness=thickness, fixed=b.fixed) for b in sb.blocks]
-    ids = O.bodies.append(bodies)
-    for b, i in zip(sb.blocks, ids):
-        b.id = i
-        O.bodies[i].state.refPos = O.bodies[i].state.pos
-    sb.ids = list(ids)
-    return sb.ids
-
-
-def break_crack(sb, tol=None, counted=None):
-    """Break (RbsmPhys.breakJoint) every joint lying on the crack line x = xc above yc. Returns the
-    number of joints broken (of those for which *counted*(I) is true, if given)."""
-    from yade import O
-    if sb.crack is None:
-        return 0
-    xc, yc = sb.crack
-    tol = tol if tol is not None else 1e-6 * max(1.0, abs(xc))
-    n = 0
-    for I in O.interactions:
-        if not I.isReal:
-            continue
-        p0, p1 = I.geom.p0, I.geom.p1
-        if abs(p0[0] - xc) <= tol and abs(p1[0] - xc) <= tol and 0.5 * (p0[1] + p1[1]) > yc:
-            I.phys.breakJoint()
-            n += 1 if counted is None or counted(I) else 0
-    return n
-
-
-def _seg_dist(p, a, b):
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    L2 = dx * dx + dy * dy
-    t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2))
-    return math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy)
-
-
-def break_joints(polylines, tol=None, counted=None):
-    """Break (RbsmPhys.breakJoint) every joint whose contact segment lies on a segment of one of
-    the *polylines* (both ends within *tol*, default 1e-6 x the scene size; length > *tol*: corner
-    contacts at a point of the polyline stay) with its two blocks on opposite sides of it. Returns
-    the number broken (of those for which *counted*(I) is true, if given)."""
-    from yade import O
-    segs = [(a, b) for l in polylines for a, b in zip(l[:-1], l[1:])]
-    if not segs:
-        return 0
-    if tol is None:
-        size = max(max(abs(c) for s in segs for p in s for c in p), 1.0)
-        tol = 1e-6 * size
-    n = 0
-    for I in O.interactions:
-        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
-            continue
-        p0, p1 = (I.geom.p0[0], I.geom.p0[1]), (I.geom.p1[0], I.geom.p1[1])
-        if math.hypot(p1[0] - p0[0], p1[1] - p0[1]) <= tol:
-            continue
-        c1, c2 = O.bodies[I.id1].state.pos, O.bodies[I.id2].state.pos
-
-        def opposite(a, b):
-            dx, dy = b[0] - a[0], b[1] - a[1]
-            s1 = dx * (c1[1] - a[1]) - dy * (c1[0] - a[0])
-            s2 = dx * (c2[1] - a[1]) - dy * (c2[0] - a[0])
-            return s1 * s2 < 0
-        if any(_seg_dist(p0, a, b) <= tol and _seg_dist(p1, a, b) <= tol and opposite(a, b) for a, b in segs):
-            I.phys.breakJoint()
-            n += 1 if counted is None or counted(I) else 0
-    return n
-
-
-def bond_and_break(sb):
-    """Bond every initial joint (ip2.setCohesionNow for the first step), take that step, then break
-    the joints of the crack (``sb.crack``) and of the crack polylines (``sb.cracks``). Returns
-    (number of joints, number broken). Under yade.mpy call it on every rank after
-    yade_rbsm.mpi.distribute() (the step is then distributed, each rank bonds and breaks its joints,
-    and the counts are of the whole scene)."""
-    from yade import O
-    from . import mpi
-    ip2 = [f for e in O.engines if hasattr(e, "physDispatcher") for f in e.physDispatcher.functors][0]
-    ip2.setCohesionNow = True
-    if mpi.is_split():
-        mpi.run(1)
-    else:
-        O.step()
-    counted = mpi.counted_here
-    nj = sum(1 for I in O.interactions if I.isReal and counted(I))
-    nb = break_crack(sb, counted=counted) + break_joints(sb.cracks, counted=counted)
-    if mpi.is_split():
-        nj, nb = (int(v) for v in mpi.allreduce_sum([nj, nb]))
-    return nj, nb
-
-
-def unbalanced_ratio(ids=None, gravity=None):
-    """Unbalanced-force ratio = mean over free blocks of |contact force + m·g| divided by the mean
-    of |m·g| (computed from O.forces.f, the masses and NewtonIntegrator's gravity). 0 at static
-    equilibrium, about 1 for blocks in free fall. Collective under yade.mpy (yade_rbsm.mpi): each
-    rank sums over the blocks it integrates."""
-    from yade import O
-    from . import mpi
-    if gravity is None:
-        newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
-        gravity = newton.gravity
-    gx, gy = gravity[0], gravity[1]
-    g = math.hypot(gx, gy)
-    num = den = 0.0
-    for b in O.bodies:
-        if b is None or (ids is not None and b.id not in ids) or b.state.blockedDOFs == "xyzXYZ" or not mpi.owned(b):
-            continue
-        f = O.forces.f(b.id)
-        m = b.state.mass
-        num += math.hypot(f[0] + m * gx, f[1] + m * gy)
-        den += m * g
-    if mpi.is_split():
-        num, den = mpi.allreduce_sum([num, den])
-    return num / den if den > 0 else 0.0
-
-
-def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None, density_scaling=False):
-    """Initial (gravity) stage: run with NewtonIntegrator damping *damping* until the unbalanced-force
-    ratio (:func:`unbalanced_ratio`) is below *tol*, checked every *check* steps, or *max_steps*.
-    *density_scaling*: RbsmTimeStepper.densityScaling during the stage (the small blocks made heavier
-    so that all run at the median block's step: the same equilibrium in fewer steps; the motion on the
-    way is not physical). Restores the previous damping and scaling. Returns (converged, steps, ratio).
-    Under yade.mpy every rank calls it (yade_rbsm.mpi.run, and a collective ratio)."""
-    from yade import O
-    from .checks import count, number  # (here: the geometry above is also loaded without the package)
-    tol = number("settle", "tol", tol, 0, low_open=True)
-    max_steps, check = count("settle", "max_steps", max_steps), count("settle", "check", check)
-    damping = number("settle", "damping", damping, 0, 1, high_open=True)
-    from .scene import time_stepper
-    from . import mpi
-    newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
-    old = newton.damping
-    newton.damping = damping
-    stepper = time_stepper()
-    if density_scaling and stepper is None:
-        raise ValueError("settle: density_scaling needs RbsmTimeStepper in O.engines (yade_rbsm.engines())")
-    old_scaling = stepper.densityScaling if stepper is not None else False
-    if stepper is not None:
-        stepper.densityScaling = bool(density_scaling)
-    steps, ratio = 0, float("inf")
-    try:
-        while steps < max_steps:
-            mpi.run(check)
-            steps += check
-            ratio = unbalanced_ratio()
-            if progress:
-                progress(steps, ratio)
-            if ratio < tol:
-                return True, steps, ratio
-        return False, steps, ratio
-    finally:
-        newton.damping = old
-        if stepper is not None:
-            stepper.densityScaling = old_scaling
+# the scene part (needs YADE) lives in slope_scene.py; its names stay importable from here
+_scene = _sibling("slope_scene")
+build_scene, break_crack, break_joints, bond_and_break, unbalanced_ratio, settle = (
+    _scene.build_scene, _scene.break_crack, _scene.break_joints, _scene.bond_and_break, _scene.unbalanced_ratio,
+    _scene.settle)

@@ -3,6 +3,8 @@
 that are open or slipping somewhere), like the seed paper's Fig. 5-6."""
 import math
 
+from . import omega
+
 __all__ = ["block_polygons", "snapshot"]
 
 
@@ -21,7 +23,7 @@ def block_polygons(O=None):
             w = ori * Vector3(v[0], v[1], 0)
             pts.append((pos[0] + w[0], pos[1] + w[1]))
         d = (pos - b.state.refPos).norm()
-        out.append((b.id, pts, d, b.state.blockedDOFs == "xyzXYZ"))
+        out.append((b.id, pts, d, omega.is_fixed(b)))
     return out
 
 
@@ -29,9 +31,7 @@ def failed_joints(O=None):
     if O is None:
         from yade import O
     segs = []
-    for I in O.interactions:
-        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
-            continue
+    for I in omega.joints(O):
         ph = I.phys
         if ph.nIntact == 0 and (ph.nOpen > 0 or ph.nSlipping > 0):
             segs.append([(I.geom.p0[0], I.geom.p0[1]), (I.geom.p1[0], I.geom.p1[1])])

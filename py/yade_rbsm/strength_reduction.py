@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 from typing import List, Optional, Tuple
 
 from .checks import count, number
+from . import omega
 
 __all__ = ["SRResult", "Trial", "strength_reduction", "trial", "reduce_strengths"]
 
@@ -76,9 +77,8 @@ class _Reference:
     def __init__(self):
         from yade import O
         self.joints = {}
-        for I in O.interactions:
-            if I.isReal and type(I.phys).__name__ == "RbsmPhys":
-                self.joints[(I.id1, I.id2)] = (I.phys.tanPhi, I.phys.cohesion, I.phys.tensileStrength)
+        for I in omega.joints(O):
+            self.joints[(I.id1, I.id2)] = (I.phys.tanPhi, I.phys.cohesion, I.phys.tensileStrength)
         self.mats = {}
         for k, m in enumerate(O.materials):
             if type(m).__name__ == "RbsmMat":
@@ -95,9 +95,7 @@ def reduce_strengths(F, ref, reduce_tensile=False):
         m.cohesion = c / F
         if reduce_tensile:
             m.tensileStrength = t / F
-    for I in O.interactions:
-        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
-            continue
+    for I in omega.joints(O):
         v = ref.joints.get((I.id1, I.id2))
         if v is None:
             continue
@@ -109,7 +107,7 @@ def reduce_strengths(F, ref, reduce_tensile=False):
 
 def _free_ids():
     from yade import O
-    return [b.id for b in O.bodies if b is not None and b.state.blockedDOFs != "xyzXYZ"]
+    return [b.id for b in omega.free_bodies(O)]
 
 
 def _trial_args(where, F, tol, d_fail, max_steps, check, damping):
@@ -128,11 +126,8 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     F, tol, d_fail, max_steps, check, damping = _trial_args("trial", F, tol, d_fail, max_steps, check, damping)
     w0 = time.time()
     O.loadTmp(mark)
-    for e in O.engines:
-        if type(e).__name__ == "PyRunner":
-            e.dead = True
-    newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
-    newton.damping = damping
+    omega.switch_off_pyrunners(O)
+    omega.newton(O).damping = damping
     reduce_strengths(F, ref, reduce_tensile)
     ids = ids if ids is not None else _free_ids()
     start = {i: Vector3(O.bodies[i].state.pos) for i in ids}

@@ -30,6 +30,8 @@ import math
 import os
 import xml.etree.ElementTree as ET
 
+from . import omega
+
 __all__ = ["VtkSeries", "recorder", "blocks_polydata", "contacts_polydata", "write_pvd", "write_vtp"]
 
 
@@ -101,7 +103,7 @@ def blocks_polydata(O=None):
         c_vel.InsertNextTuple3(v[0], v[1], 0.0)
         c_om.InsertNextValue(w[2])
         c_rot.InsertNextValue(_rot2(ori) - _rot2(rori))
-        c_fix.InsertNextValue(1 if st.blockedDOFs == "xyzXYZ" else 0)
+        c_fix.InsertNextValue(1 if omega.is_fixed(b) else 0)
         c_mass.InsertNextValue(st.mass)
         sg = stresses[b.id]
         c_stress.InsertNextTuple([sg[i, j] for i in range(3) for j in range(3)])
@@ -133,9 +135,7 @@ def contacts_polydata(O=None):
     ints = {n: _array(vtkIntArray, n) for n in ("id1", "id2", "nIntact", "nSlipping", "nOpen", "state", "broken")}
     dbls = {n: _array(vtkDoubleArray, n) for n in ("normalForce", "shearForce", "strength", "length")}
     vecs = {n: _array(vtkDoubleArray, n, 3) for n in ("normal", "force")}
-    for I in O.interactions:
-        if not I.isReal or type(I.phys).__name__ != "RbsmPhys":
-            continue
+    for I in omega.joints(O):
         g, ph = I.geom, I.phys
         a = pts.InsertNextPoint(g.p0[0], g.p0[1], 0.0)
         b = pts.InsertNextPoint(g.p1[0], g.p1[1], 0.0)

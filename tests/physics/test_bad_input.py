@@ -5,9 +5,8 @@ Tried: non-convex, clockwise, repeated vertex, collinear vertices, zero area, 2 
 inf vertex, density 0 / < 0 (RbsmMat constructor and set afterwards), thickness 0 / < 0 / NaN,
 frictionAngle < 0, = 90°, = 100°, cohesion < 0, tensileStrength < 0, and clockwise vertices assigned to an
 existing block's Polygon2D (its previous vertices must be kept)."""
-import pytest
-
 from conftest import run_scene
+from yadescene import bad_input_tests
 
 KEYWORDS = {
     "nonconvex": ["convex"], "clockwise": ["clockwise"], "repeated": ["repeated", "degenerate"],
@@ -20,18 +19,10 @@ KEYWORDS = {
 }
 
 
-@pytest.fixture(scope="module")
-def results():
-    return run_scene("badinput", {})
-
-
-@pytest.mark.parametrize("case", sorted(KEYWORDS))
-def test_bad_input_rejected_scene_unchanged(results, case):
-    r = results[case]
-    print(case, r)
-    assert r["exc"] is not None, "no exception"
-    typ, msg = r["exc"]
-    assert typ in ("ValueError", "RuntimeError")
-    assert any(k in msg.lower() for k in KEYWORDS[case]), msg
+def _unchanged(r):
     assert r["n1"] == r["n0"]
     assert r["shape_unchanged"], "the existing block's vertices were changed by the rejected assignment"
+
+
+results, test_bad_input_rejected_scene_unchanged = bad_input_tests(run_scene, KEYWORDS, ("ValueError", "RuntimeError"),
+                                                                   _unchanged)

@@ -21,9 +21,8 @@ refused when set, with a ValueError naming the attribute.
 import os
 import subprocess
 
-import pytest
-
 from conftest import run_scene, launcher, SCENES
+from yadescene import bad_input_tests
 
 KEYWORDS = {
     "poly_self_intersecting": ["degenerate", "self"], "poly_vertices_string": ["vertices"],
@@ -45,20 +44,12 @@ KEYWORDS = {
 }
 
 
-@pytest.fixture(scope="module")
-def results():
-    return run_scene("badinput", {})
-
-
-@pytest.mark.parametrize("case", sorted(KEYWORDS))
-def test_bad_input_rejected_scene_unchanged(results, case):
-    r = results[case]
-    print(case, r)
-    assert r["exc"] is not None, "accepted without an exception"
-    typ, msg = r["exc"]
-    assert typ in ("ValueError", "RuntimeError", "TypeError")
-    assert any(k in msg.lower() for k in KEYWORDS[case]), msg
+def _unchanged(r):
     assert r["unchanged"]
+
+
+results, test_bad_input_rejected_scene_unchanged = bad_input_tests(
+    run_scene, KEYWORDS, ("ValueError", "RuntimeError", "TypeError"), _unchanged)
 
 
 def run_alone(script_text_or_scene, tmp_path):

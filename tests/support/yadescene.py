@@ -1,4 +1,6 @@
-"""Running test scenes through the YADE launcher, shared by tests/physics and tests/robustness.
+"""Running test scenes through the YADE launcher, shared by tests/physics, tests/mixed and
+tests/robustness (their conftest.py: `scene_helpers(__file__)`; their test_bad_input.py:
+`bad_input_tests(...)`).
 
 A scene is a yade script scenes/<name>.py of the test directory. It receives its parameters as one
 JSON object in argv[1] (`params()`) and prints its result as one JSON line after the marker
@@ -54,3 +56,46 @@ def run_scene(scenes_dir, scene, params=None, threads=1, timeout=600, output=Fal
         pytest.fail("scene %s %r failed (exit %d):\n%s" % (scene, params, p.returncode, p.stdout[-4000:]))
     r = json.loads(lines[0][len(MARKER):])
     return (r, p.stdout) if output else r
+
+
+def scene_helpers(conftest_file):
+    """What the conftest.py of a test directory with a scenes/ folder provides:
+    ``(SCENES, launcher, run_scene, scene)``: the folder, :func:`launcher`, :func:`run_scene` bound to
+    the folder, and a pytest fixture ``scene`` returning that run_scene."""
+    import functools
+
+    import pytest
+
+    scenes = os.path.join(os.path.dirname(os.path.abspath(conftest_file)), "scenes")
+    run = functools.partial(run_scene, scenes)
+
+    @pytest.fixture
+    def scene():
+        return run
+
+    return scenes, launcher, run, scene
+
+
+def bad_input_tests(run, keywords, exceptions, unchanged):
+    """The two pieces of a test_bad_input.py over the scene scenes/badinput.py, which tries every
+    case and returns ``{case: {"exc": [type, message] or None, ...}}``: a module fixture ``results``
+    (the scene run once) and the test ``test_bad_input_rejected_scene_unchanged``, parametrized by
+    case, asserting an exception of a type in *exceptions* whose message contains one of
+    ``keywords[case]`` (lower case), then ``unchanged(result)`` (the scene is as before)."""
+    import pytest
+
+    @pytest.fixture(scope="module")
+    def results():
+        return run("badinput", {})
+
+    @pytest.mark.parametrize("case", sorted(keywords))
+    def test_bad_input_rejected_scene_unchanged(results, case):
+        r = results[case]
+        print(case, r)
+        assert r["exc"] is not None, "accepted without an exception"
+        typ, msg = r["exc"]
+        assert typ in exceptions
+        assert any(k in msg.lower() for k in keywords[case]), msg
+        unchanged(r)
+
+    return results, test_bad_input_rejected_scene_unchanged

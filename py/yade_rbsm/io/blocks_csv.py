@@ -25,6 +25,7 @@ import warnings
 from yade import wrapper
 
 from ..blocks import polygon2d
+from ..omega import is_fixed
 
 __all__ = ["export_blocks", "import_blocks", "MATERIAL_KEYS"]
 
@@ -97,7 +98,7 @@ def export_blocks(filename, bodies=None, O=None):
                    + [c % (i + 1) for i in range(nmax) for c in ("x%d", "y%d")])
         for b in blocks:
             m, st = b.material, b.state
-            row = [b.id, labels[_key(m)], 1 if st.blockedDOFs == "xyzXYZ" else 0,
+            row = [b.id, labels[_key(m)], 1 if is_fixed(b) else 0,
                    _num(b.shape.thickness), _num(st.vel[0]), _num(st.vel[1]), _num(st.angVel[2])]
             for v in b.shape.worldVertices(st.pos, st.ori):
                 row += [_num(v[0]), _num(v[1])]

@@ -13,6 +13,7 @@ import warnings
 from yade import wrapper
 
 from ..blocks import polygon2d
+from ..omega import is_fixed
 from .polylines import block_outline
 
 __all__ = ["import_dxf", "export_dxf"]
@@ -112,7 +113,7 @@ def export_dxf(filename, bodies=None, O=None):
         if not isinstance(b.shape, wrapper.Polygon2D):
             continue
         label = b.material.label or "mat%d" % b.material.id
-        layer = label + ("_fixed" if b.state.blockedDOFs == "xyzXYZ" else "")
+        layer = label + ("_fixed" if is_fixed(b) else "")
         if layer not in doc.layers:
             doc.layers.add(layer)
         pts = [(v[0], v[1]) for v in b.shape.worldVertices(b.state.pos, b.state.ori)]

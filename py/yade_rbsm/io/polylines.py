@@ -1,13 +1,14 @@
 """Checks that turn a drawn closed polyline into a block outline (pure Python, no YADE): closure,
 repeated vertices, self-intersection, orientation. Used by the DXF importer."""
 
+from ..geometry import polygon_area
+
 __all__ = ["block_outline", "signed_area", "self_intersection"]
 
 
 def signed_area(pts):
-    """Shoelace area, > 0 for a counter-clockwise ring."""
-    n = len(pts)
-    return 0.5 * sum(pts[i][0] * pts[(i + 1) % n][1] - pts[(i + 1) % n][0] * pts[i][1] for i in range(n))
+    """Shoelace area, > 0 for a counter-clockwise ring (geometry.polygon_area)."""
+    return polygon_area(pts)
 
 
 def _orient(a, b, c):

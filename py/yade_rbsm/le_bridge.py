@@ -1,0 +1,78 @@
+"""Limit equilibrium (:mod:`yade_rbsm.limit_equilibrium`) on a block slope: its ground and material
+as a limit_equilibrium.Slope (:func:`le_slope`), the methods on one slope (:func:`limit_equilibrium_summary`)
+and the tables that print them next to the RBSM factors of safety (:func:`table2`, :func:`fs_table`).
+Import these from ``yade_rbsm.safety``."""
+import math
+
+from .checks import number
+
+__all__ = ["table2", "le_slope", "limit_equilibrium_summary", "fs_table"]
+
+
+def table2(rbsm, fellenius=None, title="Table 2 - factor of safety along the slip surface", reference=()):
+    """A table like Table 2 of the seed paper: RBSM (a :class:`ContactFS`) next to Fellenius (a
+    limit_equilibrium.Result), then the rows *reference* ``(label, T, N, FS)`` given for comparison
+    (scripts/landslide_slope.py passes the seed paper's own figures)."""
+    from .limit_equilibrium import results_table
+    rows = [rbsm.row()]
+    if fellenius is not None:
+        rows.append(("Limit equilibrium (Fellenius)", fellenius.shear, fellenius.normal, fellenius.fs))
+    rows += list(reference)
+    return results_table(rows, title)
+
+
+def le_slope(surface, material=None, c=None, phi=None, density=None, g=9.81):
+    """A :class:`limit_equilibrium.Slope` with the ground polyline of a block slope (e.g.
+    ``SlopeBlocks.surface``) and one layer with the block material: ``gamma = density·g`` [kN/m³],
+    ``c`` [kPa] and ``phi`` [deg] of the joints. Either an RbsmMat (*material*: ``density``,
+    ``cohesion`` [Pa], ``frictionAngle`` [rad]) or the values (*c* [Pa], *phi* [rad], *density*
+    [kg/m³]); explicit values win."""
+    from . import limit_equilibrium as le
+    if material is not None:
+        c = material.cohesion if c is None else c
+        phi = material.frictionAngle if phi is None else phi
+        density = material.density if density is None else density
+    if c is None or phi is None or density is None:
+        raise ValueError("le_slope: give a material or c, phi and density")
+    c, g = number("le_slope", "c", c, 0), number("le_slope", "g", g, 0, low_open=True)
+    phi = number("le_slope", "phi", phi, 0, math.pi / 2, high_open=True)
+    density = number("le_slope", "density", density, 0, low_open=True)
+    return le.Slope([(float(x), float(y)) for x, y in surface],
+                    le.Layer(c=c / 1e3, phi=math.degrees(phi), gamma=density * g / 1e3, name="blocks"))
+
+
+def limit_equilibrium_summary(slope, circle=None, polyline=None, toe=None, search=None, n=50):
+    """Fellenius and Bishop on *circle* ``(xc, yc, R)``, Fellenius on *polyline*, and the
+    critical-circle search (Fellenius and Bishop) through *toe* over the centre grid *search* =
+    ``dict(x_range=..., y_range=..., nx=.., ny=.., refine=..)``. Returns ``{label: Result or
+    SearchResult}`` (a method that fails on this geometry, e.g. Bishop's m_alpha limit, is reported
+    as its ValueError message, a str)."""
+    from . import limit_equilibrium as le
+    out = {}
+
+    def _try(label, fn, *a, **k):
+        try:
+            out[label] = fn(*a, **k)
+        except ValueError as e:
+            out[label] = str(e)
+
+    if polyline is not None:
+        _try("Fellenius, slip polyline", le.fellenius_polyline, slope, polyline, n)
+    if circle is not None:
+        _try("Fellenius, circle", le.fellenius_circle, slope, le.Circle(*circle), n)
+        _try("Bishop, circle", le.bishop_circle, slope, le.Circle(*circle), n)
+    if search is not None and toe is not None:
+        for meth in ("fellenius", "bishop"):
+            _try("%s, critical circle" % meth.capitalize(), le.critical_circle, slope, through=toe,
+                 method=meth, n=n, **search)
+    return out
+
+
+def fs_table(rows, title="Factor of safety - all methods"):
+    """Rows ``(method, FS, note)``; FS may be None (not computed) or a str (failed)."""
+    w = max([len(r[0]) for r in rows] + [20])
+    lines = [title, "%-*s %8s  %s" % (w, "method", "FS", "note"), "-" * (w + 40)]
+    for lab, fs, note in rows:
+        f = "%8.3f" % fs if isinstance(fs, (int, float)) and fs is not None else "%8s" % "-"
+        lines.append("%-*s %s  %s" % (w, lab, f, note))
+    return "\n".join(lines)

@@ -1,0 +1,167 @@
+"""The scene part of a block slope (needs YADE, imported inside the functions, so that slope.py,
+which re-exports these names, still loads without it): the blocks of a :class:`slope.SlopeBlocks`
+into O.bodies, bonding and breaking joints (crack, crack polylines), the unbalanced-force ratio and
+the gravity stage. Import these from ``yade_rbsm.slope``."""
+import math
+
+__all__ = ["build_scene", "break_crack", "break_joints", "bond_and_break", "unbalanced_ratio", "settle"]
+
+
+def build_scene(sb, material=None, thickness=1.0):
+    """Append the blocks of *sb* to O.bodies (slope blocks free, foundation and walls fixed); sets
+    ``Block.id`` and ``sb.ids`` and each body's refPos (for displacements). Returns the ids.
+    With layers (``sb.layers``) each slope block takes its layer's material, the fixed blocks
+    *material* (default: the bottom layer's); the joints between layers then take the weaker
+    material (Ip2_RbsmMat_RbsmMat_RbsmPhys)."""
+    from yade import O
+    from .blocks import polygon2d
+    if material is None and not sb.layers:
+        raise ValueError("build_scene: give a material (the blocks have no layers)")
+
+    def mat(b):
+        if sb.layers and not b.fixed:
+            return sb.layers[b.layer][1]
+        return material if material is not None else sb.layers[0][1]
+    bodies = [polygon2d(b.vertices, mat(b), thickness=thickness, fixed=b.fixed) for b in sb.blocks]
+    ids = O.bodies.append(bodies)
+    for b, i in zip(sb.blocks, ids):
+        b.id = i
+        O.bodies[i].state.refPos = O.bodies[i].state.pos
+    sb.ids = list(ids)
+    return sb.ids
+
+
+def break_crack(sb, tol=None, counted=None):
+    """Break (RbsmPhys.breakJoint) every joint lying on the crack line x = xc above yc. Returns the
+    number of joints broken (of those for which *counted*(I) is true, if given)."""
+    from yade import O
+    if sb.crack is None:
+        return 0
+    xc, yc = sb.crack
+    tol = tol if tol is not None else 1e-6 * max(1.0, abs(xc))
+    n = 0
+    for I in O.interactions:
+        if not I.isReal:
+            continue
+        p0, p1 = I.geom.p0, I.geom.p1
+        if abs(p0[0] - xc) <= tol and abs(p1[0] - xc) <= tol and 0.5 * (p0[1] + p1[1]) > yc:
+            I.phys.breakJoint()
+            n += 1 if counted is None or counted(I) else 0
+    return n
+
+
+def break_joints(polylines, tol=None, counted=None):
+    """Break (RbsmPhys.breakJoint) every joint whose contact segment lies on a segment of one of
+    the *polylines* (both ends within *tol*, default 1e-6 x the scene size; length > *tol*: corner
+    contacts at a point of the polyline stay) with its two blocks on opposite sides of it. Returns
+    the number broken (of those for which *counted*(I) is true, if given)."""
+    from yade import O
+    from . import omega
+    from .geometry import point_segment_distance
+    segs = [(a, b) for l in polylines for a, b in zip(l[:-1], l[1:])]
+    if not segs:
+        return 0
+    if tol is None:
+        size = max(max(abs(c) for s in segs for p in s for c in p), 1.0)
+        tol = 1e-6 * size
+    n = 0
+    for I in omega.joints(O):
+        p0, p1 = (I.geom.p0[0], I.geom.p0[1]), (I.geom.p1[0], I.geom.p1[1])
+        if math.hypot(p1[0] - p0[0], p1[1] - p0[1]) <= tol:
+            continue
+        c1, c2 = O.bodies[I.id1].state.pos, O.bodies[I.id2].state.pos
+
+        def opposite(a, b):
+            dx, dy = b[0] - a[0], b[1] - a[1]
+            s1 = dx * (c1[1] - a[1]) - dy * (c1[0] - a[0])
+            s2 = dx * (c2[1] - a[1]) - dy * (c2[0] - a[0])
+            return s1 * s2 < 0
+        if any(point_segment_distance(p0, a, b) <= tol and point_segment_distance(p1, a, b) <= tol and opposite(a, b) for a, b in segs):
+            I.phys.breakJoint()
+            n += 1 if counted is None or counted(I) else 0
+    return n
+
+
+def bond_and_break(sb):
+    """Bond every initial joint (ip2.setCohesionNow for the first step), take that step, then break
+    the joints of the crack (``sb.crack``) and of the crack polylines (``sb.cracks``). Returns
+    (number of joints, number broken). Under yade.mpy call it on every rank after
+    yade_rbsm.mpi.distribute() (the step is then distributed, each rank bonds and breaks its joints,
+    and the counts are of the whole scene)."""
+    from yade import O
+    from . import omega, mpi
+    omega.ip2(O).setCohesionNow = True
+    if mpi.is_split():
+        mpi.run(1)
+    else:
+        O.step()
+    counted = mpi.counted_here
+    nj = sum(1 for I in O.interactions if I.isReal and counted(I))
+    nb = break_crack(sb, counted=counted) + break_joints(sb.cracks, counted=counted)
+    if mpi.is_split():
+        nj, nb = (int(v) for v in mpi.allreduce_sum([nj, nb]))
+    return nj, nb
+
+
+def unbalanced_ratio(ids=None, gravity=None):
+    """Unbalanced-force ratio = mean over free blocks of |contact force + m·g| divided by the mean
+    of |m·g| (computed from O.forces.f, the masses and NewtonIntegrator's gravity). 0 at static
+    equilibrium, about 1 for blocks in free fall. Collective under yade.mpy (yade_rbsm.mpi): each
+    rank sums over the blocks it integrates."""
+    from yade import O
+    from . import omega, mpi
+    if gravity is None:
+        gravity = omega.newton(O).gravity
+    gx, gy = gravity[0], gravity[1]
+    g = math.hypot(gx, gy)
+    num = den = 0.0
+    for b in O.bodies:
+        if b is None or (ids is not None and b.id not in ids) or omega.is_fixed(b) or not mpi.owned(b):
+            continue
+        f = O.forces.f(b.id)
+        m = b.state.mass
+        num += math.hypot(f[0] + m * gx, f[1] + m * gy)
+        den += m * g
+    if mpi.is_split():
+        num, den = mpi.allreduce_sum([num, den])
+    return num / den if den > 0 else 0.0
+
+
+def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None, density_scaling=False):
+    """Initial (gravity) stage: run with NewtonIntegrator damping *damping* until the unbalanced-force
+    ratio (:func:`unbalanced_ratio`) is below *tol*, checked every *check* steps, or *max_steps*.
+    *density_scaling*: RbsmTimeStepper.densityScaling during the stage (the small blocks made heavier
+    so that all run at the median block's step: the same equilibrium in fewer steps; the motion on the
+    way is not physical). Restores the previous damping and scaling. Returns (converged, steps, ratio).
+    Under yade.mpy every rank calls it (yade_rbsm.mpi.run, and a collective ratio)."""
+    from yade import O
+    from .checks import count, number
+    tol = number("settle", "tol", tol, 0, low_open=True)
+    max_steps, check = count("settle", "max_steps", max_steps), count("settle", "check", check)
+    damping = number("settle", "damping", damping, 0, 1, high_open=True)
+    from . import omega, mpi
+    from .scene import time_stepper
+    newton = omega.newton(O)
+    old = newton.damping
+    newton.damping = damping
+    stepper = time_stepper()
+    if density_scaling and stepper is None:
+        raise ValueError("settle: density_scaling needs RbsmTimeStepper in O.engines (yade_rbsm.engines())")
+    old_scaling = stepper.densityScaling if stepper is not None else False
+    if stepper is not None:
+        stepper.densityScaling = bool(density_scaling)
+    steps, ratio = 0, float("inf")
+    try:
+        while steps < max_steps:
+            mpi.run(check)
+            steps += check
+            ratio = unbalanced_ratio()
+            if progress:
+                progress(steps, ratio)
+            if ratio < tol:
+                return True, steps, ratio
+        return False, steps, ratio
+    finally:
+        newton.damping = old
+        if stepper is not None:
+            stepper.densityScaling = old_scaling
