@@ -421,7 +421,7 @@ Real RbsmTimeStepper::checkMotion()
 		if (!(r > 0)) r = rbsm::centroidInradius(poly->vertices);
 		const Real speed = s.vel.head<2>().norm() + std::abs(s.angVel.z()) * poly->circumradius, motion = speed * scene->dt;
 		if (speed > 0) travelDt = std::min(travelDt, 0.5 * maxStepMotion * r / speed);
-		if (motion <= maxStepMotion * r) continue;
+		if (!(motion > maxStepMotion * r)) continue; // (a NaN O.dt is the step check's to refuse, not a move)
 		rbsm_report::stopAfterThisStep(*scene);
 		rbsm_report::limited(motionReports, [&](bool last) {
 			std::ostringstream msg;

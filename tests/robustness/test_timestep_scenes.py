@@ -77,12 +77,15 @@ def test_check_mode_refuses_a_step_a_new_contact_cannot_survive():
     assert r["iter"] <= 2
 
 
-def test_zero_step_refused():
-    """Before: O.dt = 0 ran 10 steps with time frozen, silently."""
-    r = case("dt_zero")
+@pytest.mark.parametrize("dt", [0.0, float("nan")])
+def test_zero_or_nan_dt_is_refused(dt):
+    """Before: O.dt = 0 ran 10 steps with time frozen, silently; O.dt = NaN was first reported as a block
+    moving by nan m (the motion check read NaN as a move) instead of the step's refusal."""
+    r, out = run_scene("timestep_cases", dict(case="dt_zero", dt=dt), output=True)
     print(r)
     assert r["exc"] is not None and "time would not advance" in r["exc"][1]
     assert r["iter"] == 0
+    assert "moves by" not in out
 
 
 def test_nearly_incompressible_material_is_refused():

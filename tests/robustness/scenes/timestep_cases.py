@@ -151,7 +151,8 @@ elif case == "check_new":
 elif case == "dt_zero":
     O.bodies.append(polygon2d(rect(-0.5, 0.0, 1, 1), mat))
     O.engines = engines(set_dt=False)
-    O.dt = 0
+    O.dt = float(p.get("dt", 0.0))
+    O.bodies[1].state.vel = (0, -0.1, 0)  # a moving block: its motion O.dt·v must not be what is reported
     res["exc"] = run_catching(10)
     res["iter"] = O.iter
 elif case == "nu_half":
