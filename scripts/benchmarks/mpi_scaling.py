@@ -115,12 +115,6 @@ def case(p):
         print(MARK + json.dumps(res), flush=True)
         return
     rank, size = mp.rank, mp.numThreads
-    # Work-around (final @ fca0610): RbsmPairCheck takes the collider's pairs of a block with yade.mpy's
-    # Subdomain bodies for pairs without a geometry functor and stops the run after the first step on every
-    # rank (tests/mpi/scenes/rows.py stops there too). It only reports, so here it reports and goes on.
-    for e in O.engines:
-        if type(e).__name__ == "RbsmPairCheck":
-            e.stopRun = False
     rm.decompose_by_x()
     t0 = time.time()
     rm.distribute()
