@@ -68,41 +68,23 @@ namespace {
 		return s.pos.head<2>() + Vector2r(c * v.x() - sn * v.y(), sn * v.x() + c * v.y());
 	}
 
-	// NewtonIntegrator's damping, read through its Python attributes (the plugin does not declare
-	// YADE's integrator): once per full estimate.
-	Real newtonDampingOf(const Scene& scene)
+	// An attribute of NewtonIntegrator, read through its Python attributes (the plugin does not declare
+	// YADE's integrator), under Python's lock; `fallback` without an integrator or such a value.
+	template <class T> T newtonAttribute(const Scene& scene, const char* name, const T& fallback)
 	{
 		for (const auto& e : scene.engines) {
 			if (!e || e->getClassName() != "NewtonIntegrator") continue;
-			const PyGILState_STATE gil = PyGILState_Ensure();
-			Real                   d   = 0;
+			const PyGILState_STATE gil   = PyGILState_Ensure();
+			T                      value = fallback;
 			try {
-				d = boost::python::extract<Real>(e->pyDict()["damping"]);
+				value = boost::python::extract<T>(e->pyDict()[name]);
 			} catch (const boost::python::error_already_set&) {
 				PyErr_Clear();
 			}
 			PyGILState_Release(gil);
-			return std::isfinite(d) && d > 0 ? d : 0;
+			return value;
 		}
-		return 0;
-	}
-
-	// NewtonIntegrator's gravity, the same way (density scaling scales the weight with the contact forces).
-	Vector3r newtonGravityOf(const Scene& scene)
-	{
-		for (const auto& e : scene.engines) {
-			if (!e || e->getClassName() != "NewtonIntegrator") continue;
-			const PyGILState_STATE gil = PyGILState_Ensure();
-			Vector3r               g   = Vector3r::Zero();
-			try {
-				g = boost::python::extract<Vector3r>(e->pyDict()["gravity"]);
-			} catch (const boost::python::error_already_set&) {
-				PyErr_Clear();
-			}
-			PyGILState_Release(gil);
-			return g.allFinite() ? g : Vector3r::Zero();
-		}
-		return Vector3r::Zero();
+		return fallback;
 	}
 
 	std::atomic<int> motionReports { 0 };
@@ -356,7 +338,9 @@ void RbsmTimeStepper::fullCheck()
 			if (const Polygon2D* poly = polygonOf(*b)) inradius[b->id] = rbsm::centroidInradius(poly->vertices);
 	estimate();
 	firstContactDt = firstContactEstimate();
-	newtonDamping  = newtonDampingOf(*scene);
+	const Real d   = newtonAttribute<Real>(*scene, "damping", 0);
+	newtonDamping  = std::isfinite(d) && d > 0 ? d : 0;
+	newtonGravityRead = false; // read again by the next applyMassScale
 	if (densityScaling) scaleMasses();
 }
 
@@ -390,7 +374,12 @@ void RbsmTimeStepper::scaleMasses()
 // it (and of the torque) makes that (force + m g)/(s m). Equilibrium (zero force) is unchanged.
 void RbsmTimeStepper::applyMassScale()
 {
-	const Vector3r g = newtonGravityOf(*scene);
+	if (!newtonGravityRead) { // once per full estimate (and after a load), not at every step
+		const Vector3r g  = newtonAttribute<Vector3r>(*scene, "gravity", Vector3r::Zero());
+		newtonGravity     = g.allFinite() ? g : Vector3r::Zero();
+		newtonGravityRead = true;
+	}
+	const Vector3r& g = newtonGravity;
 	scene->forces.sync();
 	scaledLoads.clear(); // read all first: an addForce unsyncs the container
 	for (const auto& b : scene->bodies->body) {

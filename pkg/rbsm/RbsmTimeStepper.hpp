@@ -112,6 +112,8 @@ private:
 		Vector3r   force, torque;
 	};
 	std::vector<ScaledLoad>         scaledLoads;  // applyMassScale's corrections of this step
+	Vector3r                        newtonGravity     = Vector3r::Zero(); // NewtonIntegrator.gravity, read once per full estimate (densityScaling)
+	bool                            newtonGravityRead = false;
 	std::vector<Real>               rowDiag;      // per body id: the own-block share of rowBounds' ω² (densityScaling)
 	std::vector<BoundPose> boundPose; // per body id: its rotation when the collider last made its box
 };

@@ -146,8 +146,9 @@ def advance(n):
 def time_stepper():
     """The RbsmTimeStepper of O.engines (by its label ``timeStepper`` from engines(), else by type),
     or None."""
-    from yade import O
+    from . import omega
 
-    steppers = [e for e in O.engines if type(e).__name__ == "RbsmTimeStepper"]
-    labelled = [e for e in steppers if e.label == "timeStepper"]
-    return (labelled or steppers or [None])[0]
+    try:
+        return omega.engine("timeStepper")
+    except LookupError:
+        return None
