@@ -73,6 +73,7 @@ void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shar
 	p->tanPhi          = std::min(std::tan(m1.frictionAngle), std::tan(m2.frictionAngle));
 	p->cohesion        = std::min(m1.cohesion, m2.cohesion);
 	p->tensileStrength = std::min(m1.tensileStrength, m2.tensileStrength);
+	p->ductile         = m1.ductile && m2.ductile;
 	p->initPoints(g->nPoints(), bonded && (p->cohesion > 0 || p->tensileStrength > 0));
 	I->phys = p;
 }

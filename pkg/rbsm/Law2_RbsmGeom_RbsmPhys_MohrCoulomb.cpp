@@ -47,7 +47,7 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		return false;
 	}
 
-	const rbsm::JointParams params { p.kn, p.ks, p.cohesion, p.tanPhi, p.tensileStrength };
+	const rbsm::JointParams params { p.kn, p.ks, p.cohesion, p.tanPhi, p.tensileStrength, p.ductile };
 	const Real              area = g.length * g.thickness; // area of the whole joint [m²]
 	// Viscous damping: ξ times the critical coefficient of the joint's normal spring acting on the
 	// reduced mass, 2·sqrt(kn·A·m), spread over the joint area (traction per velocity).

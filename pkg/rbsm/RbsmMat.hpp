@@ -20,7 +20,10 @@ public:
 			"2D state used by Kawai's spring formulas: plane strain (True, slopes and long structures) or plane stress (False, thin plates)."))
 		((Real, frictionAngle, 0.5, Attr::triggerPostLoad, "Joint friction angle φ [rad], in [0, π/2)."))
 		((Real, cohesion, 0, Attr::triggerPostLoad, "Cohesion c of intact joints [Pa] (≥ 0); lost when the joint breaks."))
-		((Real, tensileStrength, 0, Attr::triggerPostLoad, "Tensile strength σt of intact joints [Pa] (≥ 0); lost when the joint breaks.")),
+		((Real, tensileStrength, 0, Attr::triggerPostLoad, "Tensile strength σt of intact joints [Pa] (≥ 0); lost when the joint breaks."))
+		((bool, ductile, false, ,
+			"Joints keep their cohesion while they slip (perfectly plastic Mohr-Coulomb, the continuum model of strength-reduction FEM and of limit equilibrium); only tension breaks them. "
+			"False (default, Kawai's RBSM and the seed): a point loses its cohesion at its first slip (brittle). A joint is ductile if both its materials are.")),
 		/*ctor*/ createIndex(); density = 2600;,
 		/*py*/ .add_property("density", boost::python::make_getter(&Material::density, boost::python::return_value_policy<boost::python::return_by_value>()),
 			&detail::setThenPostLoad<RbsmMat, Material, Real, &Material::density>,

@@ -82,6 +82,7 @@ public:
 		((Real, cohesion, 0, , "Cohesion c of the joint while intact [Pa]."))
 		((Real, tanPhi, 0, , "tan φ of the joint friction angle."))
 		((Real, tensileStrength, 0, , "Tensile strength σt of the joint while intact [Pa]."))
+		((bool, ductile, false, , "Slip keeps the cohesion (perfectly plastic); only tension breaks the joint (:yref:`RbsmMat.ductile`)."))
 		((Real, dampingCoefficient, 0, Attr::readonly, "Viscous traction per relative velocity [Pa·s/m] (from the law's dampingRatio; saved, so that RbsmTimeStepper.estimate() of a loaded scene is right before its first step)."))
 		((Real, normalForce, 0, Attr::readonly, "Resultant normal force of the joint [N] (> 0 compression), Σ σn_k a_k."))
 		((Real, shearForce, 0, Attr::readonly, "Resultant shear force of the joint [N] along the contact tangent, Σ τ_k a_k."))

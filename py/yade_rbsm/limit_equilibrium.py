@@ -68,6 +68,18 @@ slice base):
   the toe of steep exit circles, the usual ``m_alpha`` limit, configurable
   with ``m_alpha_min``) or when the iteration does not converge.
 
+* Spencer (1967), circle: the interslice forces are parallel, at an
+  angle theta; the resultant on each slice's sides is::
+
+      Q = [c l / F + (W cos(alpha) - u l) tan(phi) / F - W sin(alpha)]
+          / [cos(alpha - theta) (1 + tan(alpha - theta) tan(phi) / F)]
+
+  and F, theta satisfy both force equilibrium, sum Q = 0, and moment
+  equilibrium about the centre, sum Q cos(alpha - theta) = 0 (Spencer 1967,
+  Geotechnique 17(1)); solved as the theta where the two F(theta) curves
+  cross (scipy brentq). With phi = 0 it equals the moment FS of Fellenius
+  and Bishop exactly.
+
 Critical-circle search
 ----------------------
 :func:`critical_circle` evaluates a deterministic rectangular grid of
@@ -99,6 +111,7 @@ __all__ = [
     "SearchResult",
     "fellenius_circle",
     "bishop_circle",
+    "spencer_circle",
     "fellenius_polyline",
     "circle_slices",
     "polyline_slices",
@@ -683,6 +696,69 @@ def bishop_circle(
     return Result("Bishop simplified (circle)", F, float(np.sum(Np)), drive, res, sl.n, circle, it, sl)
 
 
+def spencer_circle(slope: Slope, circle, n: int = 50, tol: float = 1e-10) -> Result:
+    """Spencer's method for a circular slip surface (see the module docstring).
+
+    Raises ValueError if a slice's denominator ``cos(alpha - theta)(1 +
+    tan(alpha - theta) tan(phi)/F)`` is <= 0 at the solution, or if the force
+    and moment curves F(theta) do not cross for |theta| < 80 degrees."""
+    from scipy.optimize import brentq
+
+    if not isinstance(circle, Circle):
+        circle = Circle(*circle)
+    sl = circle_slices(slope, circle, n)
+    a, tp = sl.alpha, sl.tan_phi
+    drive = sl.W * np.sin(a)
+    resist0 = sl.c * sl.l + (sl.W * np.cos(a) - sl.u * sl.l) * tp
+
+    def q(F, th):
+        d = a - th
+        return (resist0 / F - drive) / (np.cos(d) * (1.0 + np.tan(d) * tp / F))
+
+    def f_of(th, moment):
+        w = np.cos(a - th) if moment else 1.0
+
+        def g(F):
+            return float(np.sum(q(F, th) * w))
+
+        def valid(F):  # every slice's denominator > 0 (Bishop's m_alpha condition)
+            d = a - th
+            return bool(np.all(np.cos(d) * (1.0 + np.tan(d) * tp / F) > 0))
+
+        Fs = [F for F in np.geomspace(0.02, 50.0, 120) if valid(F)]
+        for F0, F1 in zip(Fs[:-1], Fs[1:]):
+            if F1 < F0 * 1.1 and g(F0) * g(F1) <= 0:  # neighbours in the valid set: no pole between
+                return brentq(g, F0, F1, xtol=tol, rtol=tol)
+        raise ValueError(f"Spencer: no {'moment' if moment else 'force'} root F at theta = {math.degrees(th):.1f} deg")
+
+    def diff(th):
+        return f_of(th, True) - f_of(th, False)
+
+    ths = np.radians(np.linspace(-80.0, 80.0, 161))
+    vals = []
+    for th in ths:
+        try:
+            vals.append(diff(th))
+        except ValueError:
+            vals.append(math.nan)
+    # the root nearest theta = 0 (the physical one: interslice forces close to the mean base slope)
+    roots = [k for k in range(len(ths) - 1) if math.isfinite(vals[k]) and math.isfinite(vals[k + 1])
+             and vals[k] * vals[k + 1] <= 0]
+    if not roots:
+        raise ValueError(f"Spencer: force and moment equilibrium do not meet for |theta| < 80 deg on {circle}")
+    k = min(roots, key=lambda k: abs(ths[k]))
+    th = brentq(diff, ths[k], ths[k + 1], xtol=1e-12) if vals[k] != 0 else ths[k]
+    F = f_of(th, True)
+    d = a - th
+    den = np.cos(d) * (1.0 + np.tan(d) * tp / F)
+    if np.any(den <= 0):
+        raise ValueError(f"Spencer: slice denominator <= 0 at theta = {math.degrees(th):.1f} deg on {circle}")
+    Np = (sl.W * np.cos(a) - sl.u * sl.l) + q(F, th) * np.sin(d)  # normal to the base from the slice's equilibrium
+    r = Result("Spencer (circle)", F, float(np.sum(Np)), float(np.sum(drive)), F * float(np.sum(drive)), sl.n, circle,
+               0, sl, notes=f"theta = {math.degrees(th):.2f} deg")
+    return r
+
+
 # --------------------------------------------------------------------------
 # critical circle search
 # --------------------------------------------------------------------------
@@ -718,6 +794,14 @@ def _lin(rng, k, name):
     return np.linspace(a, b, k) if k > 1 else np.array([0.5 * (a + b)])
 
 
+def _lowest(r: Result) -> float:
+    """Lowest point of a circular slip surface between its entry and exit."""
+    c, sl = r.surface, r.slices
+    if sl.x_entry <= c.xc <= sl.x_exit:
+        return c.yc - c.R
+    return float(min(c.lower(sl.x_entry), c.lower(sl.x_exit)))
+
+
 def critical_circle(
     slope: Slope,
     x_range,
@@ -730,6 +814,7 @@ def critical_circle(
     method: str = "bishop",
     n: int = 50,
     refine: int = 0,
+    base: Optional[float] = None,
 ) -> SearchResult:
     """Grid search for the circle of minimum FS.
 
@@ -737,14 +822,17 @@ def critical_circle(
     Radii: either ``nr`` values on ``r_range`` (inclusive), or - when
     ``through=(x, y)`` is given - the one radius of the circle through that
     point (e.g. the toe).  ``method`` is ``"fellenius"`` or ``"bishop"``.
-    ``refine`` extra passes re-grid around the best centre with half the
-    previous spacing (same nx, ny).  Invalid circles are skipped.
+    ``"spencer"`` too. ``refine`` extra passes re-grid around the best centre with half the
+    previous spacing (same nx, ny).  Invalid circles are skipped, and so are
+    circles that dip below a firm base at elevation ``base`` (if given:
+    the depth limit of Taylor's and Griffiths & Lane's D factor).
     Raises ValueError if no trial circle is valid.
     """
     meth = method.lower()
-    if meth not in ("fellenius", "bishop"):
-        raise ValueError(f"method must be 'fellenius' or 'bishop', got {method!r}")
-    fn = fellenius_circle if meth == "fellenius" else bishop_circle
+    fns = {"fellenius": fellenius_circle, "bishop": bishop_circle, "spencer": spencer_circle}
+    if meth not in fns:
+        raise ValueError(f"method must be 'fellenius', 'bishop' or 'spencer', got {method!r}")
+    fn = fns[meth]
     if (r_range is None) == (through is None):
         raise ValueError("give exactly one of r_range or through")
     if through is not None:
@@ -754,6 +842,8 @@ def critical_circle(
         if radii[0] <= 0:
             raise ValueError("radii must be > 0")
     refine = int(refine)
+    if base is not None:
+        base = _finite("base", base)
     xs = _lin(x_range, nx, "x_range")
     ys = _lin(y_range, ny, "y_range")
     best = None
@@ -769,6 +859,8 @@ def critical_circle(
                     try:
                         r = fn(slope, Circle(xc, yc, R), n)
                     except ValueError:
+                        continue
+                    if base is not None and _lowest(r) < base - slope.tol:
                         continue
                     if not (r.fs > 0 and math.isfinite(r.fs)):
                         continue

@@ -205,7 +205,8 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
         block_h = _number("%s: block_h" % who, block_h)
     for (xa, ya), (xb, yb) in zip(basel[:-1], basel[1:]):
         for x, y in ((xa, ya), (xb, yb)):
-            if y >= interp_y(surf, x):
+            g = interp_y(surf, x)
+            if y > g or (y == g and x not in (x0, xn)):  # on the ground only at an end: firm base at toe level
                 raise ValueError("%s: the base must be below the ground (at x = %g)" % (who, x))
     bsegs = [(a, b) for a, b in zip(basel[:-1], basel[1:]) if b[0] > a[0]]
     ytop = max(y for _, y in surf)
@@ -254,7 +255,8 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
     if wall > 0:
         for w in ([(x0 - wall, basel[0][1]), (x0, basel[0][1]), (x0, surf[0][1]), (x0 - wall, surf[0][1])],
                   [(xn, basel[-1][1]), (xn + wall, basel[-1][1]), (xn + wall, surf[-1][1]), (xn, surf[-1][1])]):
-            blocks.append(Block(w, polygon_area(w), True, "wall"))
+            if w[2][1] > w[1][1]:  # no wall where the ground lies on the base
+                blocks.append(Block(w, polygon_area(w), True, "wall"))
     return SlopeBlocks(blocks, surf, ymin, slope_area, dropped, None, joints, cracks=cracks, layers=layers,
                        polygon=region, pattern="columns")
 
@@ -367,10 +369,34 @@ def _finish(blocks_v, extra_cuts, min_area, layers, eps=None, dropped=0.0):
     return out, dropped
 
 
+def _check_ground_above(surf, base, who):
+    """The ground is above the base, except that it may lie on it at either end: a firm base at toe
+    level (a toe flat on the base, as in Griffiths & Lane's D = 1 slopes)."""
+    lo, hi = _on_base_ends(surf, base)
+    if any(y < base for _, y in surf) or any(y <= base for _, y in surf[lo + 1:hi]) or hi - lo < 1:
+        raise ValueError("%s: the ground must be above the base everywhere (it may lie on the base only "
+                         "at either end, a firm base at toe level)" % who)
+
+
+def _on_base_ends(surf, base):
+    """Indices (lo, hi): surf[lo] is the last point of the leading run on the base (0 if none) and
+    surf[hi] the first of the trailing run (len - 1 if none)."""
+    lo, hi = 0, len(surf) - 1
+    while lo + 1 < len(surf) and surf[lo][1] <= base and surf[lo + 1][1] <= base:
+        lo += 1
+    while hi - 1 >= 0 and surf[hi][1] <= base and surf[hi - 1][1] <= base:
+        hi -= 1
+    return lo, hi
+
+
 def slope_polygon(surface, base):
-    """The slope region (CCW polygon) under the ground polyline *surface* and above y = *base*."""
+    """The slope region (CCW polygon) under the ground polyline *surface* and above y = *base*; the
+    parts of the ground lying on the base (a toe at base level) are left out."""
     surf = monotone("surface", surface)
-    return [(surf[0][0], float(base)), (surf[-1][0], float(base))] + list(reversed(surf))
+    lo, hi = _on_base_ends(surf, float(base))
+    part = surf[lo:hi + 1]
+    poly = [(part[0][0], float(base)), (part[-1][0], float(base))] + list(reversed(part))
+    return [p for k, p in enumerate(poly) if p != poly[k - 1]]
 
 
 def _fixed_blocks(surf, base, foundation, wall):
@@ -382,15 +408,15 @@ def _fixed_blocks(surf, base, foundation, wall):
     if wall > 0:
         for w in ([(x0 - wall, base), (x0, base), (x0, surf[0][1]), (x0 - wall, surf[0][1])],
                   [(xn, base), (xn + wall, base), (xn + wall, surf[-1][1]), (xn, surf[-1][1])]):
-            out.append(Block(w, polygon_area(w), True, "wall"))
+            if w[2][1] > base:  # no wall where the ground lies on the base
+                out.append(Block(w, polygon_area(w), True, "wall"))
     return out
 
 
 def _common_args(surface, base, joints, cracks, layers, foundation, wall, who):
     surf = monotone("%s: surface" % who, surface)
     base = _number("%s: base" % who, base, positive=False)
-    if any(y <= base for _, y in surf):
-        raise ValueError("%s: the ground must be above the base everywhere" % who)
+    _check_ground_above(surf, base, who)
     joints = [points("%s: joints[%d]" % (who, k), j, 2) for k, j in enumerate(joints)]
     cracks = [points("%s: cracks[%d]" % (who, k), j, 2) for k, j in enumerate(cracks)]
     layers = _check_layers(layers, surf[0][0], surf[-1][0]) if layers else []

@@ -13,8 +13,11 @@ Procedure (:func:`strength_reduction`)
    damped stage (NewtonIntegrator ``damping``, default 0.7) in chunks of *check* steps.
 3. **Failure criterion.** The trial *fails* if
 
-   * the displacement of any monitored block (default: every free block) since the start of the
-     trial exceeds ``d_fail`` (runaway), or
+   * the blocks whose displacement since the start of the trial exceeds ``d_fail`` (monitored
+     blocks, default: every free block) weigh more than ``mass_fraction`` of the monitored mass: a
+     global mechanism (runaway). Fewer of them (a sliver at the toe, a block falling off the face)
+     are a *local* failure: reported in the trial (``Trial.local``) and left out of the
+     unbalanced-force ratio, not taken as the slope's failure (``mass_fraction=0``: any block), or
    * the unbalanced-force ratio (:func:`yade_rbsm.slope.unbalanced_ratio`, mean |contact force +
      m g| over the free blocks / mean |m g|) has not come below ``tol`` within ``max_steps`` steps
      (non-convergence);
@@ -28,6 +31,16 @@ Procedure (:func:`strength_reduction`)
    ``grow`` until a stable ``F_lo`` and a failed ``F_hi`` are found, then bisected until
    ``F_hi - F_lo <= rtol · F_lo``. The result is ``F = (F_lo + F_hi) / 2`` with its bracket.
 5. The reference state is reloaded at the end (strengths and positions as before the call).
+
+The reference state is checked: one step from it at its own strengths (then reloaded) gives its
+unbalanced-force ratio (``SRResult.reference_ratio``). Above ``reference_tol`` (default 0.5; 1 is
+free fall) nothing can be bracketed: ValueError naming it, instead of trials that all fail. A
+smaller one is reported (a slope with FS < 1 is out of equilibrium at its real strengths). With a *calibration*
+(:class:`yade_rbsm.calibration.Calibration`) the strength reduced is the *assembly's*: trial F gives
+every joint and material ``calibration.joint_strength(c/F, tanφ/F)`` of the soil's c, tanφ
+(*soil*), instead of dividing the joints' own. *png*: a path prefix; the blocks coloured by their
+displacement in the last stable and the first failed trial are drawn to ``<png>_stable.png`` and
+``<png>_failed.png`` (the mechanism at the bracket's ends).
 
 PyRunners in O.engines (monitor, VTK output) are switched off (``dead``) during the trials.
 """
@@ -51,11 +64,15 @@ class Trial:
     ratio: float
     dmax: float
     wall: float
+    moving: float = 0.0  # mass fraction of the monitored blocks displaced more than d_fail
+    local: List[int] = field(default_factory=list)  # ids of blocks that ran away alone (local failure)
+    png: str = ""
 
     def __str__(self):
-        return ("F = %.4f: %s (%s after %d steps, unbalanced ratio %.2e, max displacement %.3e m, %.1f s wall)"
-                % (self.F, "FAILED" if self.failed else "stable", self.reason, self.steps, self.ratio, self.dmax,
-                   self.wall))
+        loc = (", local failure of %d block(s) %s" % (len(self.local), self.local[:5])) if self.local else ""
+        return ("F = %.4f: %s (%s after %d steps, unbalanced ratio %.2e, max displacement %.3e m, moving mass %.1f %%%s, "
+                "%.1f s wall)" % (self.F, "FAILED" if self.failed else "stable", self.reason, self.steps, self.ratio,
+                                  self.dmax, 100 * self.moving, loc, self.wall))
 
 
 @dataclass
@@ -65,6 +82,7 @@ class SRResult:
     hi: float  # smallest failed F
     trials: List[Trial] = field(default_factory=list)
     criterion: str = ""
+    reference_ratio: float = 0.0  # unbalanced-force ratio of the reference state at its own strengths
 
     def __str__(self):
         return ("strength reduction: FS = %.3f, bracket [%.4f stable, %.4f failed] after %d trials"
@@ -72,10 +90,12 @@ class SRResult:
 
 
 class _Reference:
-    """Strengths of the joints and materials of the reference state."""
+    """Strengths of the joints and materials of the reference state (and the calibration that maps
+    the soil's reduced strength to the joints')."""
 
-    def __init__(self):
+    def __init__(self, calibration=None, soil=None):
         from yade import O
+        self.calibration, self.soil = calibration, soil
         self.joints = {}
         for I in omega.joints(O):
             self.joints[(I.id1, I.id2)] = (I.phys.tanPhi, I.phys.cohesion, I.phys.tensileStrength)
@@ -89,6 +109,8 @@ def reduce_strengths(F, ref, reduce_tensile=False):
     """Divide tanφ and c of every joint and material by F (from the reference values *ref*)."""
     from yade import O
     F = number("reduce_strengths", "F", F, 0, low_open=True)
+    if ref.calibration is not None:
+        return _reduce_calibrated(F, ref)
     for k, (phi, c, t) in ref.mats.items():
         m = O.materials[k]
         m.frictionAngle = math.atan(math.tan(phi) / F)
@@ -105,6 +127,21 @@ def reduce_strengths(F, ref, reduce_tensile=False):
             I.phys.tensileStrength = v[2] / F
 
 
+def _reduce_calibrated(F, ref):
+    """Joints and materials get the joint strength that gives the assembly c/F, tanφ/F."""
+    from yade import O
+    c, phi = ref.soil
+    cj, tj = ref.calibration.joint_strength(c / F, math.tan(phi) / F)
+    for k in ref.mats:
+        m = O.materials[k]
+        m.frictionAngle = math.atan(tj)
+        m.cohesion = cj
+    for I in omega.joints(O):
+        if (I.id1, I.id2) in ref.joints:
+            I.phys.tanPhi = tj
+            I.phys.cohesion = cj
+
+
 def _free_ids():
     from yade import O
     return [b.id for b in omega.free_bodies(O)]
@@ -117,7 +154,7 @@ def _trial_args(where, F, tol, d_fail, max_steps, check, damping):
 
 
 def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=100, damping=0.7,
-          reduce_tensile=False, verbose=False):
+          reduce_tensile=False, verbose=False, mass_fraction=0.01, png=None):
     """One trial at factor *F* from the state saved under *mark* (see the module docstring).
     Returns a :class:`Trial`."""
     from yade import O, Vector3
@@ -131,23 +168,36 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     reduce_strengths(F, ref, reduce_tensile)
     ids = ids if ids is not None else _free_ids()
     start = {i: Vector3(O.bodies[i].state.pos) for i in ids}
-    steps, ratio, dmax = 0, float("inf"), 0.0
+    for i in ids:
+        O.bodies[i].state.refPos = start[i]  # the snapshot colours the trial's displacement
+    mass = {i: O.bodies[i].state.mass for i in ids}
+    total = sum(mass.values()) or 1.0
+    steps, ratio, dmax, moving = 0, float("inf"), 0.0, 0.0
     failed, reason = True, "not converged"
     below = 0
+    local = []
     while steps < max_steps:
         n = min(check, max_steps - steps)
         advance(n)
         steps += n
-        dmax = max((O.bodies[i].state.pos - start[i]).norm() for i in ids)
-        if dmax > d_fail:
+        d = {i: (O.bodies[i].state.pos - start[i]).norm() for i in ids}
+        dmax = max(d.values())
+        away = [i for i in ids if d[i] > d_fail]
+        moving = sum(mass[i] for i in away) / total
+        if away and moving > mass_fraction:
             failed, reason = True, "runaway"
             break
-        ratio = unbalanced_ratio()
+        local = away
+        ratio = unbalanced_ratio(ids=set(ids) - set(away)) if away else unbalanced_ratio()
         below = below + 1 if ratio < tol else 0
         if below >= 2:
             failed, reason = False, "converged"
             break
-    t = Trial(F, failed, reason, steps, ratio, dmax, time.time() - w0)
+    t = Trial(F, failed, reason, steps, ratio, dmax, time.time() - w0, moving, sorted(local))
+    if png:
+        from .snapshots import snapshot
+        t.png = snapshot(png, title="strength reduction F = %.4f: %s (%s)" % (F, "failed" if failed else "stable",
+                                                                              reason))
     if verbose:
         print("  strength reduction trial " + str(t), flush=True)
     return t
@@ -155,19 +205,29 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
 
 def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None, tol=1e-4, d_fail=0.05,
                        max_steps=5000, check=100, damping=0.7, reduce_tensile=False, verbose=True,
-                       mark="rbsm_srm_reference", density_scaling=False):
+                       mark="rbsm_srm_reference", density_scaling=False, mass_fraction=0.01, reference_tol=0.5,
+                       calibration=None, soil=None, png=None):
     """Factor of safety by strength reduction on the current scene (see the module docstring).
     *density_scaling*: RbsmTimeStepper.densityScaling in every trial (fewer steps to the same
     equilibrium; restored at the end).
 
     *ids*: monitored blocks for the runaway criterion (default: all free blocks). Returns an
-    :class:`SRResult`; raises RuntimeError if no bracket is found within *max_trials* trials."""
+    :class:`SRResult`; raises RuntimeError if no bracket is found within *max_trials* trials.
+    *mass_fraction*, *reference_tol*, *calibration* with *soil* = (c [Pa], φ [rad]) and *png*: see
+    the module docstring."""
     from yade import O
     where = "strength_reduction"
     start, tol, d_fail, max_steps, check, damping = _trial_args(where, start, tol, d_fail, max_steps, check, damping)
     grow = number(where, "grow", grow, 1, low_open=True)
     rtol = number(where, "rtol", rtol, 0, low_open=True)
     max_trials = count(where, "max_trials", max_trials)
+    mass_fraction = number(where, "mass_fraction", mass_fraction, 0, 1, high_open=True)
+    reference_tol = number(where, "reference_tol", reference_tol, 0, low_open=True)
+    if (calibration is None) != (soil is None):
+        raise ValueError("strength_reduction: give calibration and soil=(c, phi) together")
+    if soil is not None:
+        soil = (number(where, "soil cohesion", soil[0], 0), number(where, "soil friction angle", soil[1], 0,
+                                                                    math.pi / 2, low_open=True, high_open=True))
     from .scene import time_stepper
     stepper = time_stepper()
     if density_scaling and stepper is None:
@@ -175,20 +235,38 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     old_scaling = stepper.densityScaling if stepper is not None else False
     if stepper is not None:
         stepper.densityScaling = bool(density_scaling)  # saved with the reference: on in every trial
-    ref = _Reference()
+    ref = _Reference(calibration, soil)
     O.saveTmp(mark)
+    r0 = _reference_ratio(mark, ids)
+    if not r0 < reference_tol:
+        O.loadTmp(mark)
+        if stepper is not None:
+            time_stepper().densityScaling = old_scaling
+        raise ValueError("strength_reduction: the reference state is not near equilibrium (unbalanced-force ratio %.3g >= "
+                         "reference_tol %.3g; 1 is free fall): settle it first (yade_rbsm.slope.settle)"
+                         % (r0, reference_tol))
+    if verbose and r0 > 10 * tol:
+        print("  strength reduction: the reference state is not in equilibrium at its own strengths (unbalanced-force "
+              "ratio %.2e): FS < 1, or not settled" % r0, flush=True)
     trials = []
     kw = dict(ids=ids, tol=tol, d_fail=d_fail, max_steps=max_steps, check=check, damping=damping,
-              reduce_tensile=reduce_tensile, verbose=verbose)
-    crit = ("failure: displacement of a monitored block > %g m, or unbalanced-force ratio not < %g within %d "
-            "steps (damping %g)" % (d_fail, tol, max_steps, damping))
+              reduce_tensile=reduce_tensile, verbose=verbose, mass_fraction=mass_fraction)
+    crit = ("failure: blocks displaced > %g m weigh > %g %% of the monitored mass, or unbalanced-force ratio not < %g "
+            "within %d steps (damping %g)" % (d_fail, 100 * mass_fraction, tol, max_steps, damping))
+    pngs = {}
+
+    def run(F):
+        t = trial(F, ref, mark, png=("%s_F%.4f.png" % (png, F)) if png else None, **kw)
+        pngs[F] = t.png
+        return t
     try:
         lo = hi = None
         F = float(start)
         while lo is None or hi is None:
             if len(trials) >= max_trials:
-                raise RuntimeError("strength_reduction: no bracket after %d trials (%s)" % (len(trials), crit))
-            t = trial(F, ref, mark, **kw)
+                raise RuntimeError("strength_reduction: no bracket after %d trials (%s; reference state's unbalanced-force "
+                                   "ratio %.2e)" % (len(trials), crit, r0))
+            t = run(F)
             trials.append(t)
             if t.failed:
                 hi = F if hi is None else min(hi, F)
@@ -198,7 +276,7 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
                 F = F * grow
         while hi - lo > rtol * lo and len(trials) < max_trials:
             F = 0.5 * (lo + hi)
-            t = trial(F, ref, mark, **kw)
+            t = run(F)
             trials.append(t)
             if t.failed:
                 hi = F
@@ -206,7 +284,37 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
                 lo = F
     finally:
         O.loadTmp(mark)
+        if png:
+            _keep_bracket_pngs(png, pngs, lo, hi)
         stepper = time_stepper()  # (the loaded scene's)
         if stepper is not None:
             stepper.densityScaling = old_scaling
-    return SRResult(0.5 * (lo + hi), lo, hi, trials, crit)
+    return SRResult(0.5 * (lo + hi), lo, hi, trials, crit, r0)
+
+
+def _reference_ratio(mark, ids):
+    """Unbalanced-force ratio of the saved reference state at its own strengths: one step from it
+    (O.forces is not saved, and may be stale: forces of strengths changed since), then the state
+    is reloaded."""
+    from yade import O
+    from .scene import advance
+    from .slope import unbalanced_ratio
+    O.loadTmp(mark)
+    advance(1)
+    r = unbalanced_ratio(ids=set(ids) if ids is not None else None)
+    O.loadTmp(mark)
+    return r
+
+
+def _keep_bracket_pngs(png, pngs, lo, hi):
+    """<png>_stable.png and <png>_failed.png from the bracket's trials; the other trials' drawings go."""
+    import os
+    for F, path in pngs.items():
+        if not path:
+            continue
+        if F == lo:
+            os.replace(path, png + "_stable.png")
+        elif F == hi:
+            os.replace(path, png + "_failed.png")
+        else:
+            os.remove(path)

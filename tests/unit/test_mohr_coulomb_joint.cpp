@@ -149,3 +149,32 @@ TEST(MohrCoulombJoint, CohesionlessCarriesNoTension)
 	EXPECT_FALSE(r.brokeInTension);
 	EXPECT_DOUBLE_EQ(r.normalForce, 0);
 }
+
+// Ductile joint: the same trial as ShearBreak slips on c + sigma_n tan(phi) and keeps its cohesion at
+// every later step (perfect plasticity); tension still breaks it.
+TEST(MohrCoulombJoint, DuctileSlipKeepsCohesion)
+{
+	auto p    = cohesive();
+	p.ductile = true;
+	JointPointState s;
+	auto r = updateJointPoint(s, p, 1e-4, -4e-4, a); // trial 2e5 > 1.5e5
+	EXPECT_FALSE(r.brokeInShear);
+	EXPECT_TRUE(s.intact);
+	EXPECT_TRUE(s.slipping);
+	EXPECT_DOUBLE_EQ(r.shearTraction, 1.5e5);
+	EXPECT_NEAR(r.dissipated, 1.5e5 * (2e5 - 1.5e5) / p.ks * a, 1e-9);
+	r = updateJointPoint(s, p, 1e-4, -4e-4, a); // keeps slipping on the same surface
+	EXPECT_DOUBLE_EQ(r.shearTraction, 1.5e5);
+	EXPECT_TRUE(s.intact);
+	// in tension beyond -c/tan(phi) but above -sigma_t the strength is zero, not negative
+	auto q            = p;
+	q.tensileStrength = 10 * p.cohesion / p.tanPhi;
+	JointPointState u;
+	r = updateJointPoint(u, q, -2 * p.cohesion / p.tanPhi / p.kn, 1e-6, a);
+	EXPECT_TRUE(u.intact);
+	EXPECT_DOUBLE_EQ(r.shearTraction, 0);
+	// tension beyond sigma_t breaks it as before
+	r = updateJointPoint(s, p, -2 * p.tensileStrength / p.kn, 0, a);
+	EXPECT_TRUE(r.brokeInTension);
+	EXPECT_FALSE(s.intact);
+}

@@ -36,6 +36,7 @@ struct JointParams {
 	Real cohesion = 0;        ///< c (Pa), active while intact
 	Real tanPhi = 0;          ///< tan(friction angle)
 	Real tensileStrength = 0; ///< sigma_t (Pa), active while intact
+	bool ductile = false;     ///< slip keeps the cohesion (perfect plasticity); only tension breaks
 };
 
 struct JointPointResult {
@@ -57,7 +58,9 @@ struct JointPointResult {
 ///  3. Broken (or cohesionless) with deltaN <= 0 -> open, carries nothing, tau reset to 0.
 ///  4. Shear: |tau| > c + sigma_n tan(phi): if intact it breaks (c -> 0; if it is then not in
 ///     compression it opens as in 3); tau is returned to the surface +-(sigma_n tan(phi)) and the
-///     point is slipping; plastic slip = (|tau_trial| - tau_max) / ks.
+///     point is slipping; plastic slip = (|tau_trial| - tau_max) / ks. A ductile joint does not
+///     break in shear: it slips on c + sigma_n tan(phi) (>= 0), the perfectly plastic
+///     Mohr-Coulomb of continuum strength reduction.
 /// Cheap path: c = sigma_t = 0 means a cohesionless joint, treated as already broken (no
 /// strength checks beyond friction). A point that has broken never heals.
 /// withEnergy = false leaves elasticEnergy at 0 (a scene without O.trackEnergy does not pay for it).
@@ -123,8 +126,9 @@ inline JointPointResult updateJointPoint(JointPointState& s, const JointParams& 
 	Real       tmax = c + sn * p.tanPhi;
 	s.open          = false;
 	s.slipping      = false;
+	if (p.ductile) tmax = std::max(tmax, Real(0)); // tension above -c/tan(phi) but below sigma_t: no shear strength
 	if (std::abs(tau) > tmax) {
-		if (s.intact) {
+		if (s.intact && !p.ductile) {
 			s.intact       = false;
 			r.brokeInShear = true;
 			if (deltaN <= 0) {

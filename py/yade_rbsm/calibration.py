@@ -1,0 +1,301 @@
+"""Micro-macro calibration of Voronoi RBSM joints by virtual biaxial tests.
+
+Rigid Voronoi blocks sliding on Mohr-Coulomb joints interlock and dilate: a band of blocks has a
+larger friction angle and cohesion than its joints (on a 2:1 slope with the soil's c', phi' on the
+joints, strength reduction gave FS 2.43 against Bishop's 1.38). The established remedy in
+Voronoi-block DEM is to give the joints the strength that makes the *assembly* have the soil's:
+
+* :func:`biaxial_test` builds a rectangular sample of the same tessellation (Voronoi cells of the
+  same spacing and ``min_distance``) between rough rigid platens, confines its sides with a
+  pressure sigma3 (forces on the boundary edges), and shortens it at a constant strain rate until
+  the axial stress peaks: the peak sigma1.
+* :func:`calibrate` runs it at several confinements for a grid of joint strengths (tan phi_j x c_j,
+  ductile joints), fits the Mohr-Coulomb envelope ``sigma1 = Kp sigma3 + 2 c sqrt(Kp)`` to each, and
+  returns a :class:`Calibration`: the table joint -> assembly and its inverse,
+  :meth:`Calibration.joint_strength` (the joint c_j, tan phi_j that give an assembly c', tan phi',
+  linear interpolation on the triangulated table). The table is cached as JSON.
+
+What was measured (docs/slope_factor_of_safety.md): the assembly's friction angle does not go below
+about 30 degrees even with frictionless joints (the zig-zag of the block faces along any band), and
+brittle joints (RbsmMat.ductile False) lose their cohesion before the peak, so the assembly's
+cohesion does not depend on theirs; ductile joints carry it (c about 2.6-3.7 c_j).
+
+The model is rate independent and has no length scale but the block size (the joint stiffness is
+E'/(h1 + h2)), so the table holds for any spacing with the same ``min_distance`` ratio and the same
+ratio of confinement to E; the confinements are given as fractions of a stress scale (gamma H of the
+slope). :func:`yade_rbsm.strength_reduction.strength_reduction` takes the calibration and reduces
+the *assembly's* strength: at trial F the joints get ``joint_strength(c'/F, tan phi'/F)``.
+
+The tests run in the current YADE scene, which is saved before and restored after
+(``O.saveTmp``/``O.loadTmp``), so :func:`calibrate` may be called from a slope script at any time.
+"""
+import hashlib
+import json
+import math
+import os
+import time
+from dataclasses import asdict, dataclass, field
+from typing import List, Optional, Sequence
+
+from .checks import count, number
+
+__all__ = ["BiaxialResult", "Calibration", "biaxial_test", "calibrate", "fit_mohr_coulomb"]
+
+
+@dataclass
+class BiaxialResult:
+    sigma3: float  # confinement [Pa]
+    peak: float  # peak axial stress sigma1 [Pa]
+    strain_at_peak: float
+    steps: int
+    wall: float
+    blocks: int
+    peaked: bool  # False: max_strain reached with the stress still rising (peak = the largest value)
+    curve: List[tuple] = field(default_factory=list, repr=False)  # (axial strain, sigma1 [Pa]) every 50 steps
+
+
+def fit_mohr_coulomb(sigma3, sigma1):
+    """Least-squares line sigma1 = Kp sigma3 + q through the peaks; returns (c, phi [rad], Kp, q,
+    largest relative misfit of sigma1). ValueError for fewer than two confinements or Kp <= 1."""
+    n = len(sigma3)
+    if n < 2 or len(sigma1) != n:
+        raise ValueError("fit_mohr_coulomb: need at least two (sigma3, sigma1) pairs")
+    mx, my = sum(sigma3) / n, sum(sigma1) / n
+    sxx = sum((x - mx) ** 2 for x in sigma3)
+    if sxx <= 0:
+        raise ValueError("fit_mohr_coulomb: the confinements must differ")
+    kp = sum((x - mx) * (y - my) for x, y in zip(sigma3, sigma1)) / sxx
+    q = my - kp * mx
+    if not kp > 1:
+        raise ValueError("fit_mohr_coulomb: slope Kp = %.4g <= 1 (no friction), peaks %r" % (kp, list(sigma1)))
+    phi = math.asin((kp - 1) / (kp + 1))
+    c = q / (2 * math.sqrt(kp))
+    misfit = max(abs(kp * x + q - y) / abs(y) for x, y in zip(sigma3, sigma1))
+    return c, phi, kp, q, misfit
+
+
+def _rectangle(w, h):
+    return [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)]
+
+
+def _side_loads(verts, pos, p, w, tol, thickness):
+    """Force and moment (about the block's centroid *pos*) of pressure *p* on the block's edges on
+    x = 0 (pushing +x) and x = w (pushing -x)."""
+    fx = mz = 0.0
+    n = len(verts)
+    for k in range(n):
+        a, b = verts[k], verts[(k + 1) % n]
+        for x0, sign in ((0.0, 1.0), (w, -1.0)):
+            if abs(a[0] - x0) <= tol and abs(b[0] - x0) <= tol:
+                f = sign * p * abs(b[1] - a[1]) * thickness
+                ym = 0.5 * (a[1] + b[1])
+                fx += f
+                mz += -(ym - pos[1]) * f  # r x F, F along x
+    return fx, mz
+
+
+def biaxial_test(sigma3, joint_cohesion, joint_tan_phi, young, poisson, spacing=1.0, seed=1, width_blocks=8,
+                 aspect=2.0, min_distance=0.5, tensile_strength=None, density=2000.0, strain_per_step=1e-6,
+                 max_strain=0.03, drop=0.85, thickness=1.0, ductile=True, smooth_platens=False):
+    """One plane-strain biaxial test of a Voronoi sample (see the module docstring) in the current
+    scene (it is reset). Returns a :class:`BiaxialResult`. *tensile_strength* of the joints
+    defaults to c_j / tan phi_j (0 without cohesion). *ductile*: RbsmMat.ductile of the joints
+    (True: the cohesion survives slip, as in the continuum the calibration aims at)."""
+    from yade import O, Vector3, wrapper
+    from .blocks import polygon2d
+    from .scene import advance, engines
+    from .voronoi import voronoi_tessellation
+    from . import omega
+    who = "biaxial_test"
+    sigma3 = number(who, "sigma3", sigma3, 0)
+    joint_cohesion = number(who, "joint_cohesion", joint_cohesion, 0)
+    joint_tan_phi = number(who, "joint_tan_phi", joint_tan_phi, 0, low_open=True)
+    spacing = number(who, "spacing", spacing, 0, low_open=True)
+    width_blocks = count(who, "width_blocks", width_blocks)
+    if tensile_strength is None:
+        tensile_strength = joint_cohesion / joint_tan_phi
+    w0 = time.time()
+    O.resetThisScene()
+    mat = wrapper.RbsmMat(young=young, poisson=poisson, density=density, frictionAngle=math.atan(joint_tan_phi),
+                          cohesion=joint_cohesion, tensileStrength=tensile_strength, ductile=bool(ductile))
+    O.materials.append(mat)
+    W = width_blocks * spacing
+    H = aspect * W
+    t = voronoi_tessellation(_rectangle(W, H), spacing=spacing, seed=seed, min_distance=min_distance * spacing)
+    ids = O.bodies.append([polygon2d(v, mat, thickness=thickness) for v in t.blocks])
+    e = spacing
+    O.bodies.append(polygon2d([(-e, -e), (W + e, -e), (W + e, 0), (-e, 0)], mat, thickness=thickness, fixed=True))
+    top = O.bodies.append(polygon2d([(-e, H), (W + e, H), (W + e, H + e), (-e, H + e)], mat, thickness=thickness))
+    O.bodies[top].state.blockedDOFs = "xzXYZ"  # the top platen moves vertically only
+    tol = 1e-9 * H
+    for i, v in zip(ids, t.blocks):
+        fx, mz = _side_loads(v, O.bodies[i].state.pos, sigma3, W, tol, thickness)
+        if fx != 0 or mz != 0:
+            O.forces.setPermF(i, Vector3(fx, 0, 0))
+            O.forces.setPermT(i, Vector3(0, 0, mz))
+    O.forces.setPermF(top, Vector3(0, -sigma3 * W * thickness, 0))
+    O.engines = engines(gravity=(0, 0, 0), damping=0.7, set_dt=True, enlarge=0.01)
+    O.dt = 1e-9
+    omega.ip2(O).setCohesionNow = True  # rough platens, intact joints
+    advance(1)
+    omega.ip2(O).setCohesionNow = False
+    # isotropic stage: until the top platen stops
+    y_prev = O.bodies[top].state.pos[1]
+    steps = 1
+    for _ in range(100):
+        advance(200)
+        steps += 200
+        y = O.bodies[top].state.pos[1]
+        if abs(y - y_prev) < 1e-7 * H:
+            break
+        y_prev = y
+    # axial stage: the top platen driven down at a constant strain rate
+    O.forces.setPermF(top, Vector3(0, 0, 0))
+    st = O.bodies[top].state
+    st.blockedDOFs = "xyzXYZ"
+    y0 = st.pos[1]
+    area = W * thickness
+    peak, eps_peak, peaked = -math.inf, 0.0, False
+    curve = []
+    while True:
+        st.vel = Vector3(0, -strain_per_step * H / O.dt, 0)
+        advance(50)
+        steps += 50
+        s1 = O.forces.f(top)[1] / area
+        eps = (y0 - st.pos[1]) / H
+        curve.append((eps, s1))
+        if s1 > peak:
+            peak, eps_peak = s1, eps
+        elif s1 < drop * peak and peak > sigma3:
+            peaked = True
+            break
+        if eps > max_strain:
+            break
+    return BiaxialResult(sigma3, peak, eps_peak, steps, time.time() - w0, len(ids), peaked, curve)
+
+
+@dataclass
+class Calibration:
+    """Joint -> assembly strength table of one tessellation (see the module docstring)."""
+    params: dict
+    rows: List[dict] = field(default_factory=list)  # tan_phi_j, c_j, phi_macro (deg), c_macro, misfit, tests
+
+    def joint_strength(self, cohesion, tan_phi):
+        """(c_j, tan phi_j): the joint strength for which the assembly has cohesion *cohesion* [Pa]
+        and friction coefficient *tan_phi*: linear interpolation on the Delaunay triangulation of
+        the assembly strengths of the table (scipy); ValueError outside the calibrated range."""
+        from scipy.interpolate import LinearNDInterpolator
+        cs = self.params["cohesion"]
+        pts = [(r["c_macro"] / cs, math.tan(math.radians(r["phi_macro"]))) for r in self.rows]
+        vals = [(r["c_j"], r["tan_phi_j"]) for r in self.rows]
+        v = [float(x) for x in LinearNDInterpolator(pts, vals)([(cohesion / cs, tan_phi)]).reshape(-1)]
+        if not all(math.isfinite(x) for x in v):
+            raise ValueError("calibration: no joint strength gives the assembly c = %.5g Pa, tan phi = %.4g (outside "
+                             "the calibrated assemblies: c %.4g..%.4g Pa, tan phi %.4g..%.4g); widen the grid"
+                             % (cohesion, tan_phi, min(p[0] for p in pts) * cs, max(p[0] for p in pts) * cs,
+                                min(p[1] for p in pts), max(p[1] for p in pts)))
+        return float(v[0]), float(v[1])
+
+    def report(self):
+        p = self.params
+        lines = ["Calibration of Voronoi RBSM joints by biaxial tests (%d x %g blocks wide, aspect %g, seeds %s, "
+                 "min_distance %g, confinements %s x %.4g Pa, E = %.4g Pa, nu = %g)"
+                 % (p["width_blocks"], p["spacing"], p["aspect"], p["seeds"], p["min_distance"],
+                    p["confinements"], p["stress"], p["young"], p["poisson"]),
+                 "%10s %12s | %10s %12s %8s %9s" % ("tan phi_j", "c_j [Pa]", "phi [deg]", "c [Pa]", "c/c_j",
+                                                   "misfit")]
+        for r in sorted(self.rows, key=lambda r: (r["tan_phi_j"], r["c_j"])):
+            lines.append("%10.4f %12.5g | %10.3f %12.5g %8.3f %8.1f%%" % (
+                r["tan_phi_j"], r["c_j"], r["phi_macro"], r["c_macro"], r["c_macro"] / r["c_j"] if r["c_j"] else 1,
+                100 * r["misfit"]))
+        return "\n".join(lines)
+
+    def save(self, path):
+        with open(path, "w") as f:
+            json.dump(asdict(self), f, indent=1)
+
+    @classmethod
+    def load(cls, path):
+        with open(path) as f:
+            d = json.load(f)
+        return cls(d["params"], d["rows"])
+
+
+def _cache_path(params, cache):
+    if cache is False:
+        return None
+    key = hashlib.sha1(json.dumps(params, sort_keys=True).encode()).hexdigest()[:16]
+    d = cache if isinstance(cache, str) else os.path.join(
+        os.environ.get("XDG_CACHE_HOME", os.path.join(os.path.expanduser("~"), ".cache")), "yade_rbsm")
+    os.makedirs(d, exist_ok=True)
+    return os.path.join(d, "calibration-%s.json" % key)
+
+
+def calibrate(cohesion, friction_angle, young, poisson, stress, spacing=1.0, min_distance=0.5, seeds=(1,),
+              width_blocks=8, aspect=2.0, confinements=(0.05, 0.15, 0.3),
+              joint_friction_angles=(0.5, 5.0, 10.0, 15.0, 20.0, 25.0), cohesion_factors=(0.0, 0.25, 0.5, 1.0), density=2000.0, strain_per_step=1e-6, cache=None, verbose=True):
+    """Calibrate joints so that a Voronoi assembly has the soil's *cohesion* [Pa] and
+    *friction_angle* [rad] and the reduced strengths c/F, tan phi/F of strength reduction (see the
+    module docstring). *stress*: the stress scale of the problem (gamma H of a slope) [Pa]; the
+    confinements are *confinements* x *stress*. The joints tried: friction angles
+    *joint_friction_angles* [deg], c_j = *cohesion_factors* x the soil's (every pair), ductile, tensile strength the soil's
+    c/tan phi; the peaks of the *seeds* are averaged. *cache*: a directory (default
+    ~/.cache/yade_rbsm), or False. Returns a :class:`Calibration` (``.report()`` prints the fitted
+    envelopes)."""
+    from yade import O
+    who = "calibrate"
+    cohesion = number(who, "cohesion", cohesion, 0, low_open=True)
+    friction_angle = number(who, "friction_angle", friction_angle, 0, math.pi / 2, low_open=True, high_open=True)
+    stress = number(who, "stress", stress, 0, low_open=True)
+    tan_phi_joint = [math.tan(math.radians(number(who, "joint_friction_angles[%d]" % k, f, 0, 90, low_open=True,
+                                                  high_open=True))) for k, f in enumerate(joint_friction_angles)]
+    cohesion_factors = [number(who, "cohesion_factors[%d]" % k, f, 0) for k, f in enumerate(cohesion_factors)]
+    if len(tan_phi_joint) * len(cohesion_factors) < 3:
+        raise ValueError("calibrate: the grid needs at least 3 joint strengths")
+    seeds = [int(s) for s in seeds]
+    tp = math.tan(friction_angle)
+    tensile = cohesion / tp
+    params = dict(cohesion=cohesion, friction_angle=friction_angle, young=young, poisson=poisson, stress=stress,
+                  spacing=spacing, min_distance=min_distance, seeds=seeds, width_blocks=width_blocks, aspect=aspect,
+                  confinements=list(confinements), joint_friction_angles=list(joint_friction_angles),
+                  cohesion_factors=cohesion_factors,
+                  density=density, strain_per_step=strain_per_step, version=2)
+    path = _cache_path(params, cache)
+    if path and os.path.exists(path):
+        cal = Calibration.load(path)
+        if verbose:
+            print("calibration from the cache %s" % path)
+        return cal
+    mark = "rbsm_calibration_user_scene"
+    saved = len(O.bodies) > 0 or len(O.engines) > 0
+    if saved:
+        O.saveTmp(mark)
+    cal = Calibration(params)
+    try:
+        for tj, cj in ((t, cohesion * b) for t in tan_phi_joint for b in cohesion_factors):
+            s3, s1 = [], []
+            for f in confinements:
+                peaks = [biaxial_test(f * stress, cj, tj, young, poisson, spacing, seed=s, width_blocks=width_blocks,
+                                      aspect=aspect, min_distance=min_distance, density=density,
+                                      strain_per_step=strain_per_step, tensile_strength=tensile,
+                                      ductile=True) for s in seeds]
+                s3.append(f * stress)
+                s1.append(sum(p.peak for p in peaks) / len(peaks))
+                if verbose:
+                    print("  biaxial: tan phi_j %.4f, c_j %.5g Pa, sigma3 %.5g Pa: peak sigma1 %s Pa (%s)" % (
+                        tj, cj, f * stress, " ".join("%.5g" % p.peak for p in peaks),
+                        ", ".join("%d steps %.1f s%s" % (p.steps, p.wall, "" if p.peaked else " NO PEAK")
+                                  for p in peaks)), flush=True)
+            c, phi, kp, q, misfit = fit_mohr_coulomb(s3, s1)
+            cal.rows.append(dict(tan_phi_j=tj, c_j=cj, phi_macro=math.degrees(phi), c_macro=c, misfit=misfit,
+                                 sigma3=s3, sigma1=s1))
+    finally:
+        if saved:
+            O.loadTmp(mark)
+        else:
+            O.resetThisScene()
+    if path:
+        cal.save(path)
+    if verbose:
+        print(cal.report())
+    return cal

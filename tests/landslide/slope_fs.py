@@ -1,0 +1,86 @@
+# yade script (run by test_slope_fs.py, issue 21): the Griffiths & Lane (1999) 2:1 slope (H = 10 m, c' = 10
+# kPa, phi' = 20 deg, firm base at toe level) cut into 1 m Voronoi blocks; argv[1] says what to check:
+#   settle   joints broken by the gravity stage, brittle and ductile joints
+#   sr       strength reduction: refused on the unsettled reference; a loose block sliding off the face is a
+#            local failure (mass_fraction) and leaves the FS as it is without it (mass_fraction=0: it is the
+#            slope's failure); the mechanism PNGs
+#   ductile  RbsmMat.ductile reaches the joints and survives O.save / O.load
+# Prints RESULT <json>.
+import json, math, os, sys, tempfile
+from yade import O, wrapper
+import yade_rbsm as yr
+from yade_rbsm import slope as sl
+from yade_rbsm.strength_reduction import strength_reduction
+
+what = sys.argv[1]
+c, phi = 10e3, math.radians(20)
+
+
+def scene(ductile=False, loose=False):
+    O.resetThisScene()
+    mat = wrapper.RbsmMat(young=100e6, poisson=0.3, density=20e3 / 9.81, frictionAngle=phi, cohesion=c,
+                          tensileStrength=c / math.tan(phi), ductile=ductile)
+    O.materials.append(mat)
+    sb = sl.voronoi_slope_blocks([(0, 0), (12, 0), (32, 10), (52, 10)], 0.0, spacing=1.0, seed=1, min_distance=0.5)
+    sl.build_scene(sb, mat)
+    loose_id = None
+    if loose:  # a 0.3 m block of a weak material just above the face (26.6 deg > its 10 deg friction)
+        weak = wrapper.RbsmMat(young=100e6, poisson=0.3, density=20e3 / 9.81, frictionAngle=math.radians(10))
+        O.materials.append(weak)
+        a = math.atan2(10, 20)
+        ca, sa = math.cos(a), math.sin(a)
+        x0, y0 = 24.0, 6.0 + 1e-3  # on the face (y = (x - 12) / 2)
+        loc = [(0, 0), (0.3, 0), (0.3, 0.3), (0, 0.3)]
+        loose_id = O.bodies.append(yr.polygon2d([(x0 + ca * u - sa * v, y0 + sa * u + ca * v) for u, v in loc], weak))
+    O.engines = yr.engines(set_dt=True, enlarge=0.01)
+    O.dt = 1e-6
+    sl.bond_and_break(sb)
+    return sb, loose_id
+
+
+def broken():
+    return sum(1 for I in O.interactions if I.isReal and I.phys.nIntact < len(I.phys.intactPoints))
+
+
+out = {}
+if what == "settle":
+    for ductile in (False, True):
+        sb, _ = scene(ductile=ductile)
+        ok, steps, ratio = sl.settle(tol=1e-4, max_steps=50000, check=200, density_scaling=True)
+        n = sum(1 for I in O.interactions if I.isReal)
+        out["ductile" if ductile else "brittle"] = dict(ok=ok, steps=steps, joints=n, broken=broken(),
+                                                        open=sum(1 for I in O.interactions if I.isReal and I.phys.nOpen))
+elif what == "sr":
+    sb, _ = scene()
+    try:
+        strength_reduction(start=1.4)
+        out["unsettled"] = "accepted"
+    except ValueError as e:
+        out["unsettled"] = str(e)
+    kw = dict(start=1.4, grow=1.2, rtol=0.02, density_scaling=True, max_steps=8000, check=200, d_fail=0.1,
+              verbose=False)
+    sl.settle(tol=1e-4, max_steps=50000, check=200, density_scaling=True)
+    out["fs"] = strength_reduction(**kw).fs
+    sb, loose = scene(loose=True)
+    sl.settle(tol=1e-4, max_steps=50000, check=200, density_scaling=True)
+    png = os.path.join(tempfile.mkdtemp(), "mech")
+    r = strength_reduction(png=png, **kw)
+    out["fs_loose"] = r.fs
+    out["local"] = sorted(set(i for t in r.trials for i in t.local))
+    out["loose"] = loose
+    out["pngs"] = sorted(os.listdir(os.path.dirname(png)))
+    out["png_sizes"] = [os.path.getsize(os.path.join(os.path.dirname(png), f)) for f in out["pngs"]]
+    r0 = strength_reduction(mass_fraction=0.0, **kw)
+    out["fs_any_block"] = r0.fs
+elif what == "ductile":
+    sb, _ = scene(ductile=True)
+    yr.advance(1)
+    out["joints_ductile"] = all(I.phys.ductile for I in O.interactions if I.isReal)
+    f = os.path.join(tempfile.mkdtemp(), "s.yade.gz")
+    O.save(f)
+    O.load(f)
+    out["loaded_mat"] = O.materials[0].ductile
+    out["loaded_joints"] = all(I.phys.ductile for I in O.interactions if I.isReal)
+    m = wrapper.RbsmMat()
+    out["default"] = m.ductile
+print("RESULT " + json.dumps(out))
