@@ -52,6 +52,7 @@ class BiaxialResult:
     blocks: int
     peaked: bool  # False: max_strain reached with the stress still rising (peak = the largest value)
     curve: List[tuple] = field(default_factory=list, repr=False)  # (axial strain, sigma1 [Pa]) every 50 steps
+    residual: Optional[float] = None  # mean sigma1 over the last quarter of the strain range (residual=True)
 
 
 def fit_mohr_coulomb(sigma3, sigma1):
@@ -96,11 +97,13 @@ def _side_loads(verts, pos, p, w, tol, thickness):
 
 def biaxial_test(sigma3, joint_cohesion, joint_tan_phi, young, poisson, spacing=1.0, seed=1, width_blocks=8,
                  aspect=2.0, min_distance=0.5, tensile_strength=None, density=2000.0, strain_per_step=1e-6,
-                 max_strain=0.03, drop=0.85, thickness=1.0, ductile=True, smooth_platens=False):
+                 max_strain=0.03, drop=0.85, thickness=1.0, ductile=True, residual=False):
     """One plane-strain biaxial test of a Voronoi sample (see the module docstring) in the current
     scene (it is reset). Returns a :class:`BiaxialResult`. *tensile_strength* of the joints
     defaults to c_j / tan phi_j (0 without cohesion). *ductile*: RbsmMat.ductile of the joints
-    (True: the cohesion survives slip, as in the continuum the calibration aims at)."""
+    (True: the cohesion survives slip, as in the continuum the calibration aims at). *residual*:
+    run to *max_strain* whatever the peak and report the mean axial stress of its last quarter
+    (the strength after the interlocking is lost)."""
     from yade import O, Vector3, wrapper
     from .blocks import polygon2d
     from .scene import advance, engines
@@ -166,12 +169,16 @@ def biaxial_test(sigma3, joint_cohesion, joint_tan_phi, young, poisson, spacing=
         curve.append((eps, s1))
         if s1 > peak:
             peak, eps_peak = s1, eps
-        elif s1 < drop * peak and peak > sigma3:
+        elif not residual and s1 < drop * peak and peak > sigma3:
             peaked = True
             break
         if eps > max_strain:
             break
-    return BiaxialResult(sigma3, peak, eps_peak, steps, time.time() - w0, len(ids), peaked, curve)
+    res = None
+    if residual:
+        tail = [v for e, v in curve if e >= 0.75 * max_strain]
+        res = sum(tail) / len(tail) if tail else None
+    return BiaxialResult(sigma3, peak, eps_peak, steps, time.time() - w0, len(ids), peaked, curve, res)
 
 
 @dataclass
@@ -190,6 +197,13 @@ class Calibration:
         vals = [(r["c_j"], r["tan_phi_j"]) for r in self.rows]
         v = [float(x) for x in LinearNDInterpolator(pts, vals)([(cohesion / cs, tan_phi)]).reshape(-1)]
         if not all(math.isfinite(x) for x in v):
+            weakest = min(pts, key=lambda p: p[1])
+            if tan_phi < weakest[1]:
+                raise ValueError("calibration: the assembly tan phi = %.4g asked for is outside the calibrated assemblies and "
+                                 "below the weakest one (tan phi %.4g, phi %.1f deg, with the joints' smallest friction): "
+                                 "rigid Voronoi blocks interlock, and no joint strength makes the assembly that weak "
+                                 "(docs/slope_factor_of_safety.md)" % (tan_phi, weakest[1],
+                                                                        math.degrees(math.atan(weakest[1]))))
             raise ValueError("calibration: no joint strength gives the assembly c = %.5g Pa, tan phi = %.4g (outside "
                              "the calibrated assemblies: c %.4g..%.4g Pa, tan phi %.4g..%.4g); widen the grid"
                              % (cohesion, tan_phi, min(p[0] for p in pts) * cs, max(p[0] for p in pts) * cs,
@@ -233,7 +247,8 @@ def _cache_path(params, cache):
 
 def calibrate(cohesion, friction_angle, young, poisson, stress, spacing=1.0, min_distance=0.5, seeds=(1,),
               width_blocks=8, aspect=2.0, confinements=(0.05, 0.15, 0.3),
-              joint_friction_angles=(0.5, 5.0, 10.0, 15.0, 20.0, 25.0), cohesion_factors=(0.0, 0.25, 0.5, 1.0), density=2000.0, strain_per_step=1e-6, cache=None, verbose=True):
+              joint_friction_angles=(0.5, 5.0, 10.0, 15.0, 20.0, 25.0), cohesion_factors=(0.0, 0.25, 0.5, 1.0),
+              density=2000.0, strain_per_step=1e-6, cache=None, verbose=True, strength="peak", max_strain=0.03):
     """Calibrate joints so that a Voronoi assembly has the soil's *cohesion* [Pa] and
     *friction_angle* [rad] and the reduced strengths c/F, tan phi/F of strength reduction (see the
     module docstring). *stress*: the stress scale of the problem (gamma H of a slope) [Pa]; the
@@ -241,7 +256,8 @@ def calibrate(cohesion, friction_angle, young, poisson, stress, spacing=1.0, min
     *joint_friction_angles* [deg], c_j = *cohesion_factors* x the soil's (every pair), ductile, tensile strength the soil's
     c/tan phi; the peaks of the *seeds* are averaged. *cache*: a directory (default
     ~/.cache/yade_rbsm), or False. Returns a :class:`Calibration` (``.report()`` prints the fitted
-    envelopes)."""
+    envelopes). *strength*: "peak" (the peak axial stress) or "residual" (the mean of the last quarter
+    of a test run to *max_strain*)."""
     from yade import O
     who = "calibrate"
     cohesion = number(who, "cohesion", cohesion, 0, low_open=True)
@@ -260,6 +276,10 @@ def calibrate(cohesion, friction_angle, young, poisson, stress, spacing=1.0, min
                   confinements=list(confinements), joint_friction_angles=list(joint_friction_angles),
                   cohesion_factors=cohesion_factors,
                   density=density, strain_per_step=strain_per_step, version=2)
+    if strength not in ("peak", "residual"):
+        raise ValueError("calibrate: strength must be 'peak' or 'residual', got %r" % (strength,))
+    if strength != "peak":
+        params.update(strength=strength, max_strain=max_strain)
     path = _cache_path(params, cache)
     if path and os.path.exists(path):
         cal = Calibration.load(path)
@@ -278,15 +298,22 @@ def calibrate(cohesion, friction_angle, young, poisson, stress, spacing=1.0, min
                 peaks = [biaxial_test(f * stress, cj, tj, young, poisson, spacing, seed=s, width_blocks=width_blocks,
                                       aspect=aspect, min_distance=min_distance, density=density,
                                       strain_per_step=strain_per_step, tensile_strength=tensile,
-                                      ductile=True) for s in seeds]
+                                      ductile=True, residual=strength == "residual", max_strain=max_strain)
+                         for s in seeds]
                 s3.append(f * stress)
-                s1.append(sum(p.peak for p in peaks) / len(peaks))
+                s1.append(sum(p.peak if strength == "peak" else p.residual for p in peaks) / len(peaks))
                 if verbose:
-                    print("  biaxial: tan phi_j %.4f, c_j %.5g Pa, sigma3 %.5g Pa: peak sigma1 %s Pa (%s)" % (
-                        tj, cj, f * stress, " ".join("%.5g" % p.peak for p in peaks),
+                    print("  biaxial: tan phi_j %.4f, c_j %.5g Pa, sigma3 %.5g Pa: %s sigma1 %s Pa (%s)" % (
+                        tj, cj, f * stress, strength, " ".join("%.5g" % (p.peak if strength == "peak" else p.residual)
+                                                               for p in peaks),
                         ", ".join("%d steps %.1f s%s" % (p.steps, p.wall, "" if p.peaked else " NO PEAK")
                                   for p in peaks)), flush=True)
-            c, phi, kp, q, misfit = fit_mohr_coulomb(s3, s1)
+            try:
+                c, phi, kp, q, misfit = fit_mohr_coulomb(s3, s1)
+            except ValueError as e:  # e.g. a residual state with (nearly) frictionless joints: no envelope
+                if verbose:
+                    print("  left out of the table: tan phi_j %.4f, c_j %.5g Pa: %s" % (tj, cj, e), flush=True)
+                continue
             cal.rows.append(dict(tan_phi_j=tj, c_j=cj, phi_macro=math.degrees(phi), c_macro=c, misfit=misfit,
                                  sigma3=s3, sigma1=s1))
     finally:

@@ -5,6 +5,7 @@
 #            local failure (mass_fraction) and leaves the FS as it is without it (mass_fraction=0: it is the
 #            slope's failure); the mechanism PNGs
 #   ductile  RbsmMat.ductile reaches the joints and survives O.save / O.load
+#   calibration  a small calibration grid from inside a slope scene (which it leaves as it was)
 # Prints RESULT <json>.
 import json, math, os, sys, tempfile
 from yade import O, wrapper
@@ -83,4 +84,17 @@ elif what == "ductile":
     out["loaded_joints"] = all(I.phys.ductile for I in O.interactions if I.isReal)
     m = wrapper.RbsmMat()
     out["default"] = m.ductile
+elif what == "calibration":
+    from yade_rbsm.calibration import calibrate
+    sb, _ = scene()
+    n0, pos0 = len(O.bodies), O.bodies[5].state.pos[0]
+    cal = calibrate(c, phi, 100e6, 0.3, 200e3, confinements=(0.05, 0.15), joint_friction_angles=(0.5, 10.0, 20.0),
+                    cohesion_factors=(0.0,), density=20e3 / 9.81, cache=False, verbose=False)
+    out["rows"] = sorted((math.degrees(math.atan(r["tan_phi_j"])), r["phi_macro"], r["c_macro"]) for r in cal.rows)
+    out["scene_kept"] = len(O.bodies) == n0 and O.bodies[5].state.pos[0] == pos0
+    try:
+        cal.joint_strength(c, math.tan(phi))
+        out["phi20"] = "found"
+    except ValueError as e:
+        out["phi20"] = str(e)
 print("RESULT " + json.dumps(out))

@@ -45,3 +45,17 @@ def test_strength_reduction_reference_check_local_failure_and_pngs():
 def test_ductile_reaches_the_joints_and_is_saved():
     r = _run("ductile")
     assert r == dict(joints_ductile=True, loaded_mat=True, loaded_joints=True, default=False)
+
+
+def test_voronoi_assembly_is_stronger_than_its_joints():
+    """calibrate() from inside a slope scene (restored after): biaxial tests of 8 x 16 Voronoi blocks.
+    Frictionless joints already give the assembly a friction angle above 20 deg (measured 26-28 deg),
+    and the assembly's angle grows with the joints' (measured 26 / 42 / 55 deg for 0.5 / 10 / 20 deg), so
+    a phi' = 20 deg soil has no calibrated joints: joint_strength says so."""
+    r = _run("calibration")
+    print(r)
+    (pj0, pm0, _), (pj1, pm1, _), (pj2, pm2, _) = r["rows"]
+    assert pm0 > 20.0 and pm0 < pm1 < pm2
+    assert all(pm > pj + 15.0 for pj, pm, _ in r["rows"])
+    assert r["scene_kept"]
+    assert "outside the calibrated" in r["phi20"]

@@ -1,0 +1,73 @@
+# Factor of safety of a homogeneous c'-phi' slope cut into Voronoi blocks, against limit equilibrium
+# (issue 21, docs/slope_factor_of_safety.md). A slope H = 10 m on a firm base at toe level:
+#   --slope gl   Griffiths & Lane (1999) example 1: 2:1 face, c' = 10 kPa, phi' = 20 deg (charts: FS 1.380)
+#   --slope 45   45 deg face, c' = 10 kPa, phi' = 40 deg
+# Joints: --mode raw (the soil's c', phi', brittle: Kawai's joints), ductile (the soil's, ductile) or
+# calibrated (yade_rbsm.calibration: the joint strength that gives the assembly c', phi' at its peak;
+# strength reduction of the assembly's strength). Prints the Bishop and Spencer FS of the critical
+# circle, the RBSM FS with its bracket, and RESULT <json>.
+#
+#   build/yade-rbsm -n -x scripts/slope_fs_study.py --slope 45 --mode calibrated --spacing 1 --seed 1
+import argparse
+import json
+import math
+import os
+import sys
+import time
+
+from yade import O, wrapper
+
+import yade_rbsm as yr
+from yade_rbsm import limit_equilibrium as le
+from yade_rbsm import slope as sl
+from yade_rbsm.calibration import calibrate
+from yade_rbsm.strength_reduction import strength_reduction
+
+SLOPES = {"gl": dict(beta=math.degrees(math.atan(0.5)), c=10e3, phi=20.0),
+          "45": dict(beta=45.0, c=10e3, phi=40.0)}
+ap = argparse.ArgumentParser()
+ap.add_argument("--slope", choices=sorted(SLOPES), default="gl")
+ap.add_argument("--mode", choices=["raw", "ductile", "calibrated"], default="raw")
+ap.add_argument("--spacing", type=float, default=1.0, help="Voronoi spacing [m]")
+ap.add_argument("--seed", type=int, default=1)
+ap.add_argument("--png", default="", help="path prefix of the mechanism drawings")
+ap.add_argument("--cache", default=None, help="calibration cache directory")
+args = ap.parse_args(sys.argv[1:])
+
+H, gamma, young, poisson = 10.0, 20e3, 100e6, 0.3
+s = SLOPES[args.slope]
+c, phi = s["c"], math.radians(s["phi"])
+L = H / math.tan(math.radians(s["beta"]))
+surface = [(0, 0), (12, 0), (12 + L, H), (32 + L, H)]
+t0 = time.time()
+
+soil = le.Slope(surface, le.Layer(c=c / 1e3, phi=s["phi"], gamma=gamma / 1e3))
+crit = le.critical_circle(soil, (5, 40), (10, 50), nx=12, ny=12, refine=3, base=0.0, r_range=(5, 60), nr=19)
+spencer = le.spencer_circle(soil, crit.circle)
+print("limit equilibrium: Bishop %.3f, Spencer %.3f on %s" % (crit.fs, spencer.fs, crit.circle))
+
+cal = None
+cj, tj = c, math.tan(phi)
+if args.mode == "calibrated":
+    cal = calibrate(c, phi, young, poisson, gamma * H, density=gamma / 9.81, cache=args.cache)
+    cj, tj = cal.joint_strength(c, math.tan(phi))
+    print("calibrated joints: c_j = %.4g Pa, phi_j = %.2f deg" % (cj, math.degrees(math.atan(tj))))
+mat = wrapper.RbsmMat(young=young, poisson=poisson, density=gamma / 9.81, frictionAngle=math.atan(tj), cohesion=cj,
+                      tensileStrength=c / math.tan(phi), ductile=args.mode != "raw")
+O.materials.append(mat)
+sb = sl.voronoi_slope_blocks(surface, 0.0, spacing=args.spacing, seed=args.seed, min_distance=0.5 * args.spacing)
+sl.build_scene(sb, mat)
+O.engines = yr.engines(set_dt=True, enlarge=0.01)
+O.dt = 1e-6
+nj, _ = sl.bond_and_break(sb)
+ok, steps, ratio = sl.settle(tol=1e-4, max_steps=50000, check=200, density_scaling=True)
+broken = sum(1 for I in O.interactions if I.isReal and I.phys.nIntact < len(I.phys.intactPoints))
+print("%d blocks, %d joints; gravity stage %s after %d steps, %d joints broken" % (len(sb.free), nj,
+      "converged" if ok else "NOT converged", steps, broken))
+r = strength_reduction(start=1.4, grow=1.2, rtol=0.02, density_scaling=True, max_steps=8000, check=200, d_fail=0.1,
+                       calibration=cal, soil=(c, phi) if cal else None, png=args.png or None)
+wall = time.time() - t0
+print("%s; %.0f s wall" % (r, wall))
+print("RESULT " + json.dumps(dict(slope=args.slope, mode=args.mode, spacing=args.spacing, seed=args.seed,
+                                  blocks=len(sb.free), fs=r.fs, lo=r.lo, hi=r.hi, bishop=crit.fs, spencer=spencer.fs,
+                                  broken=broken, joints=nj, wall=wall)))
