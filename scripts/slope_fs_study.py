@@ -32,6 +32,7 @@ ap.add_argument("--spacing", type=float, default=1.0, help="Voronoi spacing [m]"
 ap.add_argument("--seed", type=int, default=1)
 ap.add_argument("--png", default="", help="path prefix of the mechanism drawings")
 ap.add_argument("--cache", default=None, help="calibration cache directory")
+ap.add_argument("--no-density-scaling", action="store_true", help="settle and reduce at the dynamic step")
 args = ap.parse_args(sys.argv[1:])
 
 H, gamma, young, poisson = 10.0, 20e3, 100e6, 0.3
@@ -60,14 +61,18 @@ sl.build_scene(sb, mat)
 O.engines = yr.engines(set_dt=True, enlarge=0.01)
 O.dt = 1e-6
 nj, _ = sl.bond_and_break(sb)
-ok, steps, ratio = sl.settle(tol=1e-4, max_steps=50000, check=200, density_scaling=True)
+ds = not args.no_density_scaling
+ok, steps, ratio = sl.settle(tol=1e-4, max_steps=50000, check=200, density_scaling=ds)
 broken = sum(1 for I in O.interactions if I.isReal and I.phys.nIntact < len(I.phys.intactPoints))
 print("%d blocks, %d joints; gravity stage %s after %d steps, %d joints broken" % (len(sb.free), nj,
       "converged" if ok else "NOT converged", steps, broken))
-r = strength_reduction(start=1.4, grow=1.2, rtol=0.02, density_scaling=True, max_steps=8000, check=200, d_fail=0.1,
+# unscaled, the step is about 3 x shorter: the same simulated time per trial takes 3 x the steps
+r = strength_reduction(start=1.4, grow=1.2, rtol=0.02, density_scaling=ds, max_steps=8000 if ds else 24000, check=200,
+                       d_fail=0.1,
                        calibration=cal, soil=(c, phi) if cal else None, png=args.png or None)
 wall = time.time() - t0
 print("%s; %.0f s wall" % (r, wall))
 print("RESULT " + json.dumps(dict(slope=args.slope, mode=args.mode, spacing=args.spacing, seed=args.seed,
                                   blocks=len(sb.free), fs=r.fs, lo=r.lo, hi=r.hi, bishop=crit.fs, spencer=spencer.fs,
-                                  broken=broken, joints=nj, wall=wall)))
+                                  broken=broken, joints=nj, wall=wall, density_scaling=ds, settle_steps=steps,
+                                  sr_steps=sum(t.steps for t in r.trials))))

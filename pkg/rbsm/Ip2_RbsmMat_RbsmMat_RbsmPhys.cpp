@@ -68,8 +68,8 @@ void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shar
 	const auto k     = rbsm::kawaiSpringsTwoMaterials(m1.young, m1.poisson, g->h1, m2.young, m2.poisson, g->h2, plane);
 
 	auto p             = shared_ptr<RbsmPhys>(new RbsmPhys);
-	p->kn              = k.kn;
-	p->ks              = k.ks;
+	p->kn              = rbsm_mixed::givenOr(m1.jointKn, m2.jointKn, k.kn);
+	p->ks              = rbsm_mixed::givenOr(m1.jointKs, m2.jointKs, k.ks);
 	p->tanPhi          = std::min(std::tan(m1.frictionAngle), std::tan(m2.frictionAngle));
 	p->cohesion        = std::min(m1.cohesion, m2.cohesion);
 	p->tensileStrength = std::min(m1.tensileStrength, m2.tensileStrength);

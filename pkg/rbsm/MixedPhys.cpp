@@ -16,7 +16,7 @@ namespace rbsm_mixed {
 	{
 		Elastic e;
 		if (const auto* r = dynamic_cast<const RbsmMat*>(&m)) {
-			e = Elastic { r->young, r->poisson, r->frictionAngle, r->cohesion, r->tensileStrength, true };
+			e = Elastic { r->young, r->poisson, r->frictionAngle, r->cohesion, r->tensileStrength, true, r->jointKn, r->jointKs, r->ductile };
 		} else if (const auto* f = dynamic_cast<const FrictMat*>(&m)) {
 			e = Elastic { f->young, f->poisson, f->frictionAngle, 0, 0, false };
 		}
@@ -48,8 +48,9 @@ namespace rbsm_mixed {
 		const auto plane = planeStrain ? rbsm::PlaneState::PlaneStrain : rbsm::PlaneState::PlaneStress;
 		const auto k     = rbsm::kawaiSpringsTwoMaterials(block.young, block.poisson, h, block.young, block.poisson, 0, plane);
 		auto       p     = shared_ptr<RbsmPhys>(new RbsmPhys);
-		p->kn              = k.kn;
-		p->ks              = k.ks;
+		p->kn              = givenOr(block.jointKn, 0, k.kn);
+		p->ks              = givenOr(block.jointKs, 0, k.ks);
+		p->ductile         = block.ductile;
 		p->tanPhi          = std::min(std::tan(block.frictionAngle), std::tan(boundary.frictionAngle));
 		p->cohesion        = std::min(block.cohesion, boundary.cohesion);
 		p->tensileStrength = std::min(block.tensileStrength, boundary.tensileStrength);

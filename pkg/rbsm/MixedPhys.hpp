@@ -13,7 +13,18 @@ namespace rbsm_mixed {
 	struct Elastic {
 		Real young = 0, poisson = 0, frictionAngle = 0, cohesion = 0, tensileStrength = 0;
 		bool rbsm = false;
+		Real jointKn = 0, jointKs = 0; ///< RbsmMat's given joint stiffness (0: Kawai's)
+		bool ductile = false;
 	};
+
+	/// A joint stiffness given by the materials (> 0): the smaller of two, or the one given; else kawai.
+	inline Real givenOr(Real a, Real b, Real kawai)
+	{
+		if (a > 0 && b > 0) return a < b ? a : b;
+		if (a > 0) return a;
+		if (b > 0) return b;
+		return kawai;
+	}
 	Elastic elasticOf(const Material& m);
 
 	/// The reference radii (refR1, refR2) of a point contact of YADE's sphere laws (a GenericSpheresContact

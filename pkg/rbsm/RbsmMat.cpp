@@ -38,6 +38,8 @@ void RbsmMat::postLoad(RbsmMat& m)
 	        "must be in [0, pi/2) radians");
 	require(std::isfinite(m.cohesion) && m.cohesion >= 0, m, "cohesion", m.cohesion, "must be a finite number >= 0");
 	require(std::isfinite(m.tensileStrength) && m.tensileStrength >= 0, m, "tensileStrength", m.tensileStrength, "must be a finite number >= 0");
+	require(std::isfinite(m.jointKn) && m.jointKn >= 0, m, "jointKn", m.jointKn, "must be a finite number >= 0 (0: Kawai's stiffness)");
+	require(std::isfinite(m.jointKs) && m.jointKs >= 0, m, "jointKs", m.jointKs, "must be a finite number >= 0 (0: Kawai's stiffness)");
 }
 
 } // namespace yade

@@ -23,7 +23,12 @@ public:
 		((Real, tensileStrength, 0, Attr::triggerPostLoad, "Tensile strength σt of intact joints [Pa] (≥ 0); lost when the joint breaks."))
 		((bool, ductile, false, ,
 			"Joints keep their cohesion while they slip (perfectly plastic Mohr-Coulomb, the continuum model of strength-reduction FEM and of limit equilibrium); only tension breaks them. "
-			"False (default, Kawai's RBSM and the seed): a point loses its cohesion at its first slip (brittle). A joint is ductile if both its materials are.")),
+			"False (default, Kawai's RBSM and the seed): a point loses its cohesion at its first slip (brittle). A joint is ductile if both its materials are."))
+		((Real, jointKn, 0, Attr::triggerPostLoad,
+			"Normal stiffness per unit area of the joints of these blocks [Pa/m], as rock engineers give a joint set's kn; 0 (default): Kawai's E′/(h1+h2) from young and poisson. "
+			"Between two materials that both give it, the smaller; if only one does, its value. Also used for joints with walls and facets, and by RbsmTimeStepper's first-contact bound."))
+		((Real, jointKs, 0, Attr::triggerPostLoad,
+			"Shear stiffness per unit area of the joints of these blocks [Pa/m]; 0 (default): Kawai's 2G/(h1+h2). Combined as jointKn.")),
 		/*ctor*/ createIndex(); density = 2600;,
 		/*py*/ .add_property("density", boost::python::make_getter(&Material::density, boost::python::return_value_policy<boost::python::return_by_value>()),
 			&detail::setThenPostLoad<RbsmMat, Material, Real, &Material::density>,

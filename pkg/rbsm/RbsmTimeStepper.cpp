@@ -299,6 +299,9 @@ Real RbsmTimeStepper::firstContactEstimate() const
 			continue; // a material the joints refuse is reported where they meet it
 		}
 		const Real r = size_t(b->id) < inradius.size() ? inradius[b->id] : rbsm::centroidInradius(poly->vertices);
+		// a given joint stiffness: compliance at most 1/(2 kn) per block, so a pair is at least kn stiff
+		if (mat->jointKn > 0) En = std::max(En, 2 * mat->jointKn * r);
+		if (mat->jointKs > 0) Es = std::max(Es, 2 * mat->jointKs * r);
 		keep(bestN, r / En, b->id);
 		keep(bestS, r / Es, b->id);
 		blocks.push_back(Block { b->id, poly, En, Es, r });

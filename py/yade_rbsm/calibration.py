@@ -103,7 +103,9 @@ def biaxial_test(sigma3, joint_cohesion, joint_tan_phi, young, poisson, spacing=
     defaults to c_j / tan phi_j (0 without cohesion). *ductile*: RbsmMat.ductile of the joints
     (True: the cohesion survives slip, as in the continuum the calibration aims at). *residual*:
     run to *max_strain* whatever the peak and report the mean axial stress of its last quarter
-    (the strength after the interlocking is lost)."""
+    (the strength after the interlocking is lost). The side pressure acts horizontally on the
+    blocks that form the sides at the start (permanent forces: a membrane that follows them), the
+    platens are rough (bonded), the top one is driven at *strain_per_step* of the height per step."""
     from yade import O, Vector3, wrapper
     from .blocks import polygon2d
     from .scene import advance, engines
