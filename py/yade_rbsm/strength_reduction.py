@@ -161,6 +161,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     from .scene import advance
     from .slope import unbalanced_ratio
     F, tol, d_fail, max_steps, check, damping = _trial_args("trial", F, tol, d_fail, max_steps, check, damping)
+    mass_fraction = number("trial", "mass_fraction", mass_fraction, 0, 1, high_open=True)
     w0 = time.time()
     O.loadTmp(mark)
     omega.switch_off_pyrunners(O)
