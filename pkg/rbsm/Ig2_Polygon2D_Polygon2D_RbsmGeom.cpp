@@ -108,13 +108,8 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	// block 2 is placed (rotation by θ2 − θ1, translation by R(−θ1)(x2 − x1)), and the result is
 	// turned back to the world frame. Half the transforms, and coordinates of the block's size
 	// (less round-off far from the origin).
-	Real cos1, sin1, cos2, sin2;
-	planarCosSin(state1.ori, cos1, sin1);
-	planarCosSin(state2.ori, cos2, sin2);
-	const Vector2r d12 = state2.pos.head<2>() - state1.pos.head<2>();
-	const Vector2r rel(cos1 * d12.x() + sin1 * d12.y(), -sin1 * d12.x() + cos1 * d12.y()); // R(−θ1)(x2 − x1)
-	const Real     relCos = cos1 * cos2 + sin1 * sin2, relSin = cos1 * sin2 - sin1 * cos2;  // θ2 − θ1
-	const rbsm::RelativePose relPose { rel, relCos, relSin };
+	const rbsm::Pose2 pose1   = planarPose(state1.pos, state1.ori);
+	const rbsm::Pose2 relPose = pose1.relative(planarPose(state2.pos, state2.ori)); // R(−θ1)(x2 − x1), θ2 − θ1
 	// A block reshaped since this joint was made (Polygon2D.revision): the joint's edge numbers and
 	// search memory belong to the old shape. It is searched afresh on the new shape and gets new
 	// springs (Ip2 makes its phys again: a bonded joint becomes frictional); a joint that no longer
@@ -160,11 +155,11 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		rbsm::Vec2              ownA[2 * kStackVertices], ownB[2 * kStackVertices];
 		std::vector<rbsm::Vec2> heapA, heapB;
 		const rbsm::PolygonView  va = ownFramePolygon(A, ownA, heapA);
-		const rbsm::PosedPolygon pb { ownFramePolygon(B, ownB, heapB), rel, relCos, relSin }; // block 2 in block 1's frame
+		const rbsm::PosedPolygon pb { ownFramePolygon(B, ownB, heapB), relPose }; // block 2 in block 1's frame
 
 		const Real            maxSeparation = reach();
-		const rbsm::BlockPose poseA { Vector2r::Zero(), 1, 0, A.circumradius }; // block 1's frame
-		const rbsm::BlockPose poseB { rel, relCos, relSin, B.circumradius };
+		const rbsm::BlockPose poseA { rbsm::Pose2(), A.circumradius }; // block 1's frame
+		const rbsm::BlockPose poseB { relPose, B.circumradius };
 		rbsm::ContactHint     hint;
 		if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
 		// A followed joint whose search memory certifies this step: from the few vertices it needs
@@ -211,10 +206,9 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		g->frozenSteps++;
 	g->lost = false;
 	// back to the world frame: x ↦ x1 + R(θ1) x for points, R(θ1) for directions
-	auto toWorldDir   = [&](const Vector2r& v) { return Vector2r(cos1 * v.x() - sin1 * v.y(), sin1 * v.x() + cos1 * v.y()); };
-	c.normal          = toWorldDir(c.normal);
-	c.p0              = state1.pos.head<2>() + toWorldDir(c.p0);
-	c.p1              = state1.pos.head<2>() + toWorldDir(c.p1);
+	c.normal = pose1.rotate(c.normal);
+	c.p0     = pose1.apply(c.p0);
+	c.p1     = pose1.apply(c.p1);
 
 	g->normal     = c.normal;
 	g->p0         = c.p0;

@@ -44,7 +44,7 @@ struct Block {
 			n[i] = Vec2(c * localNormals[i].x() - s * localNormals[i].y(), s * localNormals[i].x() + c * localNormals[i].y());
 		}
 	}
-	BlockPose pose() const { return BlockPose { pos, std::cos(angle), std::sin(angle), radius }; }
+	BlockPose pose() const { return BlockPose { Pose2(pos, std::cos(angle), std::sin(angle)), radius }; }
 };
 
 std::vector<Vec2> rect(Real x0, Real y0, Real w, Real h) { return { { x0, y0 }, { x0 + w, y0 }, { x0 + w, y0 + h }, { x0, y0 + h } }; }
@@ -68,7 +68,7 @@ void expectSame(const EdgeContact& a, const EdgeContact& b, int step)
 
 // The relative pose a memory was taken at: rewritten by every full search (the pose moves), kept
 // when the search is skipped.
-bool samePose(const SearchMemory& a, const SearchMemory& b) { return a.rel == b.rel && a.relCos == b.relCos && a.relSin == b.relSin; }
+bool samePose(const SearchMemory& a, const SearchMemory& b) { return a.rel.p == b.rel.p && a.rel.c == b.rel.c && a.rel.s == b.rel.s; }
 
 // What a caller carries to the next step, as Ig2 does: the contact's edge as the hint, and the memory
 // only while the blocks touch.
@@ -148,8 +148,8 @@ double followInFrameOfA(Block A, Block B, int steps, Real dx, Real da, unsigned 
 		const Real ca = std::cos(A.angle), sa = std::sin(A.angle), cb = std::cos(B.angle), sb = std::sin(B.angle);
 		const Vec2 d = B.pos - A.pos;
 		const PosedPolygon posedB { PolygonView { B.local.data(), B.localNormals.data(), int(B.local.size()) },
-			                    Vec2(ca * d.x() + sa * d.y(), -sa * d.x() + ca * d.y()), ca * cb + sa * sb, ca * sb - sa * cb };
-		const BlockPose    qa { Vec2::Zero(), 1, 0, A.radius }, qb { posedB.pos, posedB.cos, posedB.sin, B.radius };
+			                    Pose2(Vec2(ca * d.x() + sa * d.y(), -sa * d.x() + ca * d.y()), ca * cb + sa * sb, ca * sb - sa * cb) };
+		const BlockPose    qa { Pose2(), A.radius }, qb { posedB.pose, B.radius };
 		SearchMemory       afterFull = memory;
 		const PolygonView  placedB   = posedB.place(placed.data());
 		const EdgeContact  full      = edgeContact(ownA, placedB, maxSeparation, haveHint ? &hint : nullptr, hysteresis, minSize);

@@ -276,15 +276,12 @@ namespace {
 	// Largest change of any edge separation since the memory's search (SearchMemory, skip rule in
 	// EdgeContact.hpp): relativeMotionBound, plus the round-off pad. Also returns the current
 	// relative pose.
-	[[gnu::always_inline]] inline Real separationDrift(const BlockPose& a, const BlockPose& b, const SearchMemory& m, Vec2& rel, Real& relCos, Real& relSin)
+	[[gnu::always_inline]] inline Real separationDrift(const BlockPose& a, const BlockPose& b, const SearchMemory& m, Pose2& rel)
 	{
-		const Vec2 d = b.centroid - a.centroid;
-		rel          = Vec2(a.cos * d.x() + a.sin * d.y(), -a.sin * d.x() + a.cos * d.y()); // R(-θA) d
-		relCos       = a.cos * b.cos + a.sin * b.sin;
-		relSin       = a.cos * b.sin - a.sin * b.cos;
+		rel            = a.pose.relative(b.pose);
 		auto       l1  = [](const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); };
-		const Real pad = 1e-9 * (l1(a.centroid) + l1(b.centroid) + a.radius + b.radius);
-		return relativeMotionBound(rel, relCos, relSin, m.rel, m.relCos, m.relSin, a.radius, b.radius) + pad;
+		const Real pad = 1e-9 * (l1(a.pose.p) + l1(b.pose.p) + a.radius + b.radius);
+		return relativeMotionBound(rel, m.rel, a.radius, b.radius) + pad;
 	}
 
 	// What edgeContact and followContact both start from: the reach is maxSeparation (at least 0)
@@ -302,17 +299,17 @@ namespace {
 	}
 
 	// The skip rule of SearchMemory (EdgeContact.hpp) on the memory's edge, drift D and the relative
-	// rotation (relCos, relSin) given: true if the full search would keep that edge, with c its
+	// pose rel given: true if the full search would keep that edge, with c its
 	// contact, every field written (clipped, or apart: separation, refBody and refEdge, the rest as
 	// default); false, with c untouched or emptied, if the search must decide, or (onlyCertified) if
 	// the clip certificates do not hold.
 	template <class PA, class PB>
-	bool keepHinted(const PA& A, const PB& B, const SearchMemory& m, Real drift, Real relCos, Real relSin, Real maxSep, Real tol, bool onlyCertified, EdgeContact& c)
+	bool keepHinted(const PA& A, const PB& B, const SearchMemory& m, Real drift, const Pose2& rel, Real maxSep, Real tol, bool onlyCertified, EdgeContact& c)
 	{
 		const int              rb = m.refBody, re = m.refEdge;
 		const ClipCertificate& k  = m.clip;
 		// the certificates hold for this relative rotation (chord χ, L1: a bound of the Euclidean)?
-		const Real chord     = std::abs(relCos - m.relCos) + std::abs(relSin - m.relSin);
+		const Real chord     = std::abs(rel.c - m.rel.c) + std::abs(rel.s - m.rel.s);
 		const bool certified = k.incEdge >= 0 && k.incLead > 2 * chord && chord < kFacingMargin;
 		if (onlyCertified && !(certified && k.supportOnInc)) return false;
 		auto sepOf = [&](int body, int edge) { return body == 1 ? edgeSeparation(A, edge, B) : edgeSeparation(B, edge, A); };
@@ -382,12 +379,11 @@ EdgeContact edgeContact(
 
 	// --- temporal coherence: keep the hinted edge without a search when provably unchanged ---
 	const bool coherent = poseA && poseB && memory;
-	Vec2       rel      = Vec2::Zero();
-	Real       relCos = 1, relSin = 0;
+	Pose2      rel;
 	if (coherent) {
-		const Real drift = separationDrift(*poseA, *poseB, *memory, rel, relCos, relSin);
+		const Real drift = separationDrift(*poseA, *poseB, *memory, rel);
 		if (hinted && followable(*memory, *hint, drift)) {
-			if (keepHinted(arrays(A), arrays(B), *memory, drift, relCos, relSin, maxSep, tol, false, c)) return c;
+			if (keepHinted(arrays(A), arrays(B), *memory, drift, rel, maxSep, tol, false, c)) return c;
 		}
 	}
 
@@ -447,8 +443,6 @@ EdgeContact edgeContact(
 		m.refEdge  = refEdge;
 		m.maxOther = -std::numeric_limits<Real>::infinity();
 		m.rel      = rel;
-		m.relCos   = relCos;
-		m.relSin   = relSin;
 		Real         rivalSep[2] = { -std::numeric_limits<Real>::infinity(), -std::numeric_limits<Real>::infinity() };
 		// A rival is an edge within a tenth of the block size of the chosen one (the other block's
 		// twin of a shared edge, the two edges of a corner); farther ones are bounded by maxOther.
@@ -575,11 +569,10 @@ bool followContact(
 	if (nA < 3 || nB < 3 || !hintNamesEdge(hint, nA, nB)) return false;
 	const Real maxSep = reachWithSlop(maxSeparation, minSize);
 	const Real tol    = hysteresis * minSize;
-	Vec2       rel;
-	Real       relCos, relSin;
-	const Real drift = separationDrift(poseA, poseB, memory, rel, relCos, relSin);
+	Pose2      rel;
+	const Real drift = separationDrift(poseA, poseB, memory, rel);
 	if (!followable(memory, hint, drift)) return false;
-	return keepHinted(arrays(A), Posed { B, nB }, memory, drift, relCos, relSin, maxSep, tol, true, c);
+	return keepHinted(arrays(A), Posed { B, nB }, memory, drift, rel, maxSep, tol, true, c);
 }
 
 bool separatedBeyond(const PolygonView& A, const PolygonView& B, Real maxSeparation, Real minSize)

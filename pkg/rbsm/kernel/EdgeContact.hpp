@@ -16,6 +16,7 @@
 // reference line (eq. (9)).
 #pragma once
 
+#include <pkg/rbsm/kernel/Pose2.hpp>
 #include <pkg/rbsm/kernel/Types.hpp>
 
 #include <cmath>
@@ -58,12 +59,11 @@ struct PolygonView {
 	int         n   = 0;
 };
 
-/// Pose of a rigid block (world frame): centroid, cos and sin of its rotation angle, and its
-/// circumradius about the centroid (m). Needed only for the temporal coherence below.
+/// A rigid block's pose in the frame a contact is computed in, and its circumradius about the
+/// centroid (m). Needed only for the temporal coherence below.
 struct BlockPose {
-	Vec2 centroid = Vec2::Zero();
-	Real cos = 1, sin = 0;
-	Real radius = 0;
+	Pose2 pose;
+	Real  radius = 0;
 };
 
 /// Certificates for the clipping of a kept reference edge (clipOn in EdgeContact.cpp), taken at the
@@ -111,24 +111,23 @@ struct SearchMemory {
 	int  rivalBody[2] = { 0, 0 }, rivalEdge[2] = { -1, -1 }; ///< the two next-best edges (body 0: none)
 	Real rivalLead[2] = { 0, 0 };  ///< their separation minus the chosen edge's at the search (m)
 	Real maxOther = 0;            ///< largest separation of all other edges at the search (m)
-	Vec2 rel      = Vec2::Zero(); ///< centroid of B in A's frame at the search (m)
-	Real relCos = 1, relSin = 0;  ///< rotation of B relative to A at the search
+	Pose2 rel;                    ///< pose of B in A's frame at the search (Pose2::relative)
 	ClipCertificate clip;         ///< what the clip of the kept edge may skip (see above)
 };
 
 /// Upper bound (m) of how far any point of either block can have moved relative to the other since
-/// an earlier pose: B at (rel, relCos, relSin) in A's frame now, at (rel0, cos0, sin0) then. In A's
+/// an earlier pose: B at `now` in A's frame, at `then` earlier (r = now.p, r0 = then.p). In A's
 /// frame B's points move by at most |Δr| + χ R_B, in B's frame A's by at most |Δr| + χ (R_A + |r|),
 /// χ the chord of the relative rotation; every Euclidean norm is bounded by the L1 norm
 /// (|x| + |y| ≥ √(x² + y²)), a looser but still rigorous bound without square roots:
 ///     |Δr|₁ + χ₁ (R_A + R_B + |r0|₁).
 /// Used by edgeContact's skip of the search (SearchMemory) and by the frozen kinematics
 /// (FrozenContact.hpp). radiusA, radiusB: circumradii (m).
-inline Real relativeMotionBound(const Vec2& rel, Real relCos, Real relSin, const Vec2& rel0, Real cos0, Real sin0, Real radiusA, Real radiusB)
+inline Real relativeMotionBound(const Pose2& now, const Pose2& then, Real radiusA, Real radiusB)
 {
 	auto       l1    = [](const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); };
-	const Real chord = std::abs(relCos - cos0) + std::abs(relSin - sin0);
-	return l1(rel - rel0) + chord * (radiusA + radiusB + l1(rel0));
+	const Real chord = std::abs(now.c - then.c) + std::abs(now.s - then.s);
+	return l1(now.p - then.p) + chord * (radiusA + radiusB + l1(then.p));
 }
 
 /// Round-off slop of the contact tests (m): 1e-12 of minSize, the smaller block's size. An exactly
@@ -198,22 +197,13 @@ EdgeContact edgeContact(
         SearchMemory*      memory = nullptr);
 
 /// A block's polygon in its own frame (vertices about its centroid and edge normals, as a
-/// PolygonView) and its pose in the frame a contact is computed in: rotation (cos, sin), then
-/// translation pos. A vertex or normal is placed when asked, by the one formula place() uses too.
+/// PolygonView) and its pose in the frame a contact is computed in. A vertex or normal is placed
+/// when asked, by the one formula place() uses too (Pose2::place, Pose2::rotate).
 struct PosedPolygon {
 	PolygonView local;
-	Vec2        pos = Vec2::Zero();
-	Real        cos = 1, sin = 0;
-	Vec2        vertex(int i) const
-	{
-		const Vec2& v = local.v[i];
-		return Vec2(pos.x() + cos * v.x() - sin * v.y(), pos.y() + sin * v.x() + cos * v.y());
-	}
-	Vec2 normal(int i) const
-	{
-		const Vec2& e = local.nrm[i];
-		return Vec2(cos * e.x() - sin * e.y(), sin * e.x() + cos * e.y());
-	}
+	Pose2       pose;
+	Vec2        vertex(int i) const { return pose.place(local.v[i]); }
+	Vec2        normal(int i) const { return pose.rotate(local.nrm[i]); }
 	/// Every vertex, then every normal, into out (2 n entries): the placed polygon.
 	PolygonView place(Vec2* out) const;
 };
