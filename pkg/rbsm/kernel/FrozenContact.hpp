@@ -31,6 +31,7 @@
 // `pose` (a Pose2: B's centroid in A's frame, cos and sin of θB − θA; Pose2::relative). Units: metres.
 #pragma once
 
+#include <pkg/rbsm/kernel/ContactMemory.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 
 #include <algorithm>
@@ -74,7 +75,7 @@ inline FrozenContact freezeContact(const EdgeContact& c, const Pose2& pose)
 }
 
 /// How far any point of either block can have moved relative to the other since the update (m):
-/// relativeMotionBound (EdgeContact.hpp), the bound of edgeContact's coherence. radiusA, radiusB:
+/// relativeMotionBound (ContactMemory.hpp), the bound of edgeContact's coherence. radiusA, radiusB:
 /// circumradii (m).
 inline Real frozenDrift(const FrozenContact& f, const Pose2& now, Real radiusA, Real radiusB)
 {
