@@ -45,11 +45,10 @@ void Bo1_Polygon2D_Aabb::go(const shared_ptr<Shape>& shape, shared_ptr<Bound>& b
 		bound->min = bound->max = se3.position;
 		return;
 	}
-	Real c, s;
-	planarCosSin(se3.orientation, c, s);
-	Vector2r   lo = Vector2r::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;
+	const rbsm::Pose2 pose = planarPose(se3.position, se3.orientation);
+	Vector2r          lo = Vector2r::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;
 	for (const Vector2r& v : p.vertices) {
-		const Vector2r w(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+		const Vector2r w = pose.rotate(v);
 		lo = lo.cwiseMin(w);
 		hi = hi.cwiseMax(w);
 	}

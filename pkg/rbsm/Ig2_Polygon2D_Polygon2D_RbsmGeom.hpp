@@ -37,6 +37,17 @@ public:
 	// clang-format on
 	FUNCTOR2D(Polygon2D, Polygon2D);
 	DEFINE_FUNCTOR_ORDER_2D(Polygon2D, Polygon2D);
+
+private:
+	// The steps of go (Ig2_Polygon2D_Polygon2D_RbsmGeom.cpp): the two blocks and block 2's pose in
+	// block 1's frame; the exact update's outcome.
+	struct Pair;
+	enum class Outcome { Touching, Apart, Lost };
+	static void forgetOldShapes(Interaction& I, const Polygon2D& A, const Polygon2D& B);
+	Real        reach(const Interaction& I, bool existing) const;
+	bool        followFrozen(const Pair& pair, const Interaction& I, const RbsmGeom& g, rbsm::EdgeContact& c) const;
+	Outcome     exactContact(const Pair& pair, const State& state1, const State& state2, const shared_ptr<Interaction>& I, RbsmGeom*& g, rbsm::EdgeContact& c);
+	RbsmGeom*   newGeom(const Pair& pair, const State& state1, const State& state2, Interaction& I, const rbsm::SearchMemory& memory);
 };
 REGISTER_SERIALIZABLE(Ig2_Polygon2D_Polygon2D_RbsmGeom);
 

@@ -34,10 +34,8 @@ bool Ig2_Polygon2D_Sphere_ScGeom::go(
 	if (block.vertices.empty() || block.edgeNormals.size() != block.vertices.size()) return false; // reported by Bo1_Polygon2D_Aabb
 
 	// The sphere's centre in the block's frame, x ↦ R(−θ)(x − x1); the contact back to the world frame.
-	Real cs, sn;
-	planarCosSin(state1.ori, cs, sn);
-	const Vector2r          d = state2.pos.head<2>() - state1.pos.head<2>();
-	const Vector2r          local(cs * d.x() + sn * d.y(), -sn * d.x() + cs * d.y());
+	const rbsm::Pose2       pose1 = planarPose(state1.pos, state1.ori);
+	const Vector2r          local = pose1.applyInverse(state2.pos.head<2>());
 	const rbsm::DiskContact c = rbsm::diskPolygonContact(rbsm::PolygonView { block.vertices.data(), block.edgeNormals.data(), int(block.vertices.size()) }, local, r);
 
 	const bool isNew = !I->geom;
@@ -46,8 +44,9 @@ bool Ig2_Polygon2D_Sphere_ScGeom::go(
 		return false;
 	if (isNew) I->geom = boost::static_pointer_cast<ScGeom>(ClassFactory::instance().createShared("ScGeom")); // Debian's constructor
 	ScGeom&        g = static_cast<ScGeom&>(*I->geom);
-	const Vector3r normal(cs * c.normal.x() - sn * c.normal.y(), sn * c.normal.x() + cs * c.normal.y(), 0);
-	const Vector2r point = state1.pos.head<2>() + Vector2r(cs * c.point.x() - sn * c.point.y(), sn * c.point.x() + cs * c.point.y());
+	const Vector2r normal2 = pose1.rotate(c.normal);
+	const Vector3r normal(normal2.x(), normal2.y(), 0);
+	const Vector2r point = pose1.apply(c.point);
 	g.contactPoint       = Vector3r(point.x(), point.y(), state2.pos.z());
 	g.penetrationDepth   = c.overlap;
 	g.refR1 = g.refR2 = r;

@@ -43,9 +43,7 @@ void Polygon2D::postLoad(Polygon2D& p)
 
 Vector2r Polygon2D::worldVertex(size_t i, const Vector2r& pos, Real angle) const
 {
-	const Real c = std::cos(angle), s = std::sin(angle);
-	const auto& v = vertices[i];
-	return pos + Vector2r(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+	return rbsm::Pose2(pos, std::cos(angle), std::sin(angle)).apply(vertices[i]);
 }
 
 std::vector<Vector2r> Polygon2D::pyWorldVertices(const Vector3r& pos, const Quaternionr& ori) const

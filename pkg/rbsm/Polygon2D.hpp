@@ -1,6 +1,7 @@
 // Polygon2D: the shape of an RBSM block, a rigid convex polygon in the x-y plane.
 #pragma once
 #include <core/Shape.hpp>
+#include <pkg/rbsm/kernel/Pose2.hpp>
 
 namespace yade {
 
@@ -70,6 +71,14 @@ inline void planarCosSin(const Quaternionr& q, Real& c, Real& s)
 	const Real w = q.w(), z = q.z(), n = w * w + z * z;
 	c = (w * w - z * z) / n;
 	s = 2 * w * z / n;
+}
+
+//! The planar pose of a body at pos with orientation q (rbsm::Pose2, planarCosSin).
+inline rbsm::Pose2 planarPose(const Vector3r& pos, const Quaternionr& q)
+{
+	rbsm::Pose2 pose(pos.head<2>(), 1, 0);
+	planarCosSin(q, pose.c, pose.s);
+	return pose;
 }
 
 } // namespace yade

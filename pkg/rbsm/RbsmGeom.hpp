@@ -2,8 +2,12 @@
 #pragma once
 #include <core/IGeom.hpp>
 #include <core/State.hpp>
+#include <pkg/rbsm/kernel/ContactMemory.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 #include <pkg/rbsm/kernel/FrozenContact.hpp>
+#include <pkg/rbsm/kernel/IntegrationRule.hpp>
+#include <pkg/rbsm/kernel/KawaiSprings.hpp>
+#include <pkg/rbsm/kernel/Pose2.hpp>
 #include <pkg/rbsm/kernel/SegmentKinematics.hpp>
 
 namespace yade {
@@ -82,7 +86,17 @@ public:
 		return rbsm::SegmentKinematics { d0, d1, relativeVelocity, relativeAngularVelocity * Vector2r(-seg.y(), seg.x()) };
 	}
 	Vector2r point(int k) const;
-	// Python's per-point lists (defined with the functor, Ig2_Polygon2D_Polygon2D_RbsmGeom.cpp)
+	/// The step's contact c (rbsm::EdgeContact, in block 1's frame frame1, exact or frozen) written to
+	/// the world frame, with the centroids, Kawai's h1 and h2 and the relative motion along the segment
+	/// (the fields kinematics() reads back for the law); the joint is not lost.
+	/// (Inline, below: it runs for every contact at every step, from Ig2_Polygon2D_Polygon2D_RbsmGeom.cpp.)
+	void update(const rbsm::EdgeContact& c, const rbsm::Pose2& frame1, const State& state1, const State& state2);
+	/// After an exact update c at the relative pose rel (block 2 in block 1's frame): freezes it when
+	/// keepFrozen (Ig2's updateTolerance > 0), frozenSteps back to 0.
+	void exactAt(const rbsm::EdgeContact& c, const rbsm::Pose2& rel, bool keepFrozen);
+	/// The blocks no longer face each other within reach: handed to the law as lost (it ends the joint).
+	void markLost(Real separationNow);
+	// Python's per-point lists
 	std::vector<Real> pyPositions() const;
 	std::vector<Real> pyWeights() const;
 	std::vector<Real> pyDeltaN() const;
@@ -127,5 +141,31 @@ public:
 	REGISTER_CLASS_INDEX(RbsmGeom, IGeom);
 };
 REGISTER_SERIALIZABLE(RbsmGeom);
+
+inline void RbsmGeom::update(const rbsm::EdgeContact& c, const rbsm::Pose2& frame1, const State& state1, const State& state2)
+{
+	lost = false;
+	// back to the world frame: x ↦ x1 + R(θ1) x for points, R(θ1) for directions
+	normal     = frame1.rotate(c.normal);
+	p0         = frame1.apply(c.p0);
+	p1         = frame1.apply(c.p1);
+	length     = c.length;
+	separation = c.separation;
+	refBody    = c.refBody;
+	refEdge    = c.refEdge;
+	if (c.incEdge >= 0) incEdge = c.incEdge; // (a frozen step keeps the last exact one)
+	centroid1 = state1.pos.head<2>();
+	centroid2 = state2.pos.head<2>();
+	h1        = rbsm::distanceToLine(centroid1, p0, normal);
+	h2        = rbsm::distanceToLine(centroid2, p0, normal);
+	// The relative motion along the segment, which the law samples at its points (kinematics()):
+	// block 2's velocity relative to block 1's at p0, v2 + ω2 × (p0 − c2) − v1 − ω1 × (p0 − c1).
+	const rbsm::SegmentKinematics k = rbsm::segmentKinematics(
+	        c.d0, c.d1, p0, p1, centroid1, state1.vel.head<2>(), state1.angVel.z(), centroid2, state2.vel.head<2>(), state2.angVel.z());
+	d0                      = k.d0;
+	d1                      = k.d1;
+	relativeVelocity        = k.v0;
+	relativeAngularVelocity = state2.angVel.z() - state1.angVel.z();
+}
 
 } // namespace yade

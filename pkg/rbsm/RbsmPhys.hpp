@@ -2,7 +2,7 @@
 // of every integration point.
 #pragma once
 #include <core/IPhys.hpp>
-#include <pkg/rbsm/kernel/EdgeContact.hpp>
+#include <pkg/rbsm/kernel/IntegrationRule.hpp>
 #include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
 
 #include <array>

@@ -62,10 +62,7 @@ namespace {
 
 	Vector2r worldVertex(const Polygon2D& poly, const State& s, int i)
 	{
-		Real c, sn;
-		planarCosSin(s.ori, c, sn);
-		const Vector2r& v = poly.vertices[size_t(i)];
-		return s.pos.head<2>() + Vector2r(c * v.x() - sn * v.y(), sn * v.x() + c * v.y());
+		return planarPose(s.pos, s.ori).apply(poly.vertices[size_t(i)]);
 	}
 
 	// An attribute of NewtonIntegrator, read through its Python attributes (the plugin does not declare

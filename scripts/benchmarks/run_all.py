@@ -89,7 +89,7 @@ FUNCS = {  # label -> regex on callgrind_annotate's inclusive function names
     "Ip2 (physics)": r"yade::Ip2_\w+::go\(",
     "Law2 (law)": r"yade::Law2_\w+::go\(",
     "edgeContact (kernel)": r"edgeContact\(",  # placing block 2 whole: new contacts, searches
-    "followContact (kernel)": r"followContact\(",  # a followed joint's certified steps (EdgeContact.hpp)
+    "followContact (kernel)": r"followContact\(",  # a followed joint's certified steps (ContactMemory.hpp)
 }
 
 

@@ -410,7 +410,7 @@ TEST(EdgeContact, SeparatedBeyondAgreesWithTheFullSearch)
 		const PolygonView       va { A.data(), nA.data(), int(A.size()) }, vb { B.data(), nB.data(), int(B.size()) };
 		const Real              minSize = std::min(polygonSize(A), polygonSize(B)), maxSep = trial % 5 == 0 ? 1e-3 : 0.0;
 		const bool              rej     = separatedBeyond(va, vb, maxSep, minSize);
-		const EdgeContact       c       = edgeContact(va, vb, maxSep, nullptr, 1e-6, minSize);
+		const EdgeContact       c       = edgeContact(va, vb, ContactQuery { maxSep, nullptr, 1e-6, minSize });
 		if (rej) {
 			++rejected;
 			EXPECT_FALSE(c.touching) << "trial " << trial << " separation " << c.separation;

@@ -1,11 +1,12 @@
 // Temporal coherence of the edge contact (SearchMemory, ClipCertificate and followContact,
-// EdgeContact.hpp): following a contact from step to step with the memory must give EXACTLY
+// ContactMemory.hpp): following a contact from step to step with the memory must give EXACTLY
 // (bitwise) what a full separating-axis search with the same hint gives, while skipping most
 // searches. Compared along trajectories of two blocks that stay in contact: pairs of rectangles
 // sharing an edge (the brick wall of the benchmark), a rectangle rocking on another, a brick sliding
 // past a corner, a 12-gon rolling on a brick, a sharp corner sinking obliquely, and random convex
 // polygons, with small and large steps of relative rotation and translation.
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
+#include <pkg/rbsm/kernel/ContactMemory.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 
 #include <gtest/gtest.h>
@@ -44,7 +45,7 @@ struct Block {
 			n[i] = Vec2(c * localNormals[i].x() - s * localNormals[i].y(), s * localNormals[i].x() + c * localNormals[i].y());
 		}
 	}
-	BlockPose pose() const { return BlockPose { pos, std::cos(angle), std::sin(angle), radius }; }
+	BlockPose pose() const { return BlockPose { Pose2(pos, std::cos(angle), std::sin(angle)), radius }; }
 };
 
 std::vector<Vec2> rect(Real x0, Real y0, Real w, Real h) { return { { x0, y0 }, { x0 + w, y0 }, { x0 + w, y0 + h }, { x0, y0 + h } }; }
@@ -68,7 +69,7 @@ void expectSame(const EdgeContact& a, const EdgeContact& b, int step)
 
 // The relative pose a memory was taken at: rewritten by every full search (the pose moves), kept
 // when the search is skipped.
-bool samePose(const SearchMemory& a, const SearchMemory& b) { return a.rel == b.rel && a.relCos == b.relCos && a.relSin == b.relSin; }
+bool samePose(const SearchMemory& a, const SearchMemory& b) { return a.rel.p == b.rel.p && a.rel.c == b.rel.c && a.rel.s == b.rel.s; }
 
 // What a caller carries to the next step, as Ig2 does: the contact's edge as the hint, and the memory
 // only while the blocks touch.
@@ -104,8 +105,10 @@ double follow(Block A, Block B, int steps, Real dx, Real da, unsigned seed, Real
 		const PolygonView pa { va.data(), na.data(), int(va.size()) }, pb { vb.data(), nb.data(), int(vb.size()) };
 		const BlockPose   qa = A.pose(), qb = B.pose();
 		const SearchMemory before = memory;
-		const EdgeContact  fast   = edgeContact(pa, pb, maxSeparation, haveHint ? &hint : nullptr, hysteresis, minSize, &qa, &qb, &memory);
-		const EdgeContact  full   = edgeContact(pa, pb, maxSeparation, haveHint ? &hint : nullptr, hysteresis, minSize);
+		const ContactQuery q { maxSeparation, haveHint ? &hint : nullptr, hysteresis, minSize };
+		Coherence          coherence { qa, qb, &memory };
+		const EdgeContact  fast = edgeContact(pa, pb, q, &coherence);
+		const EdgeContact  full = edgeContact(pa, pb, q);
 		expectSame(fast, full, step);
 		++compared;
 		// the memory is rewritten by every full search (the pose moved), kept by a skip
@@ -148,17 +151,19 @@ double followInFrameOfA(Block A, Block B, int steps, Real dx, Real da, unsigned 
 		const Real ca = std::cos(A.angle), sa = std::sin(A.angle), cb = std::cos(B.angle), sb = std::sin(B.angle);
 		const Vec2 d = B.pos - A.pos;
 		const PosedPolygon posedB { PolygonView { B.local.data(), B.localNormals.data(), int(B.local.size()) },
-			                    Vec2(ca * d.x() + sa * d.y(), -sa * d.x() + ca * d.y()), ca * cb + sa * sb, ca * sb - sa * cb };
-		const BlockPose    qa { Vec2::Zero(), 1, 0, A.radius }, qb { posedB.pos, posedB.cos, posedB.sin, B.radius };
+			                    Pose2(Vec2(ca * d.x() + sa * d.y(), -sa * d.x() + ca * d.y()), ca * cb + sa * sb, ca * sb - sa * cb) };
+		const BlockPose    qa { Pose2(), A.radius }, qb { posedB.pose, B.radius };
 		SearchMemory       afterFull = memory;
 		const PolygonView  placedB   = posedB.place(placed.data());
-		const EdgeContact  full      = edgeContact(ownA, placedB, maxSeparation, haveHint ? &hint : nullptr, hysteresis, minSize);
-		expectSame(edgeContact(ownA, placedB, maxSeparation, haveHint ? &hint : nullptr, hysteresis, minSize, &qa, &qb, &afterFull), full, step);
+		const ContactQuery q { maxSeparation, haveHint ? &hint : nullptr, hysteresis, minSize };
+		const EdgeContact  full = edgeContact(ownA, placedB, q);
+		Coherence          withFull { qa, qb, &afterFull };
+		expectSame(edgeContact(ownA, placedB, q, &withFull), full, step);
 		// what the caller's contact held before (Ig2: the frozen contact it decided against) must not
 		// leak into a decided step
 		EdgeContact fast;
 		fast.touching = true, fast.length = 1, fast.d0 = fast.d1 = 1, fast.incEdge = 7;
-		if (haveHint && followContact(ownA, posedB, maxSeparation, hint, hysteresis, minSize, qa, qb, memory, fast)) {
+		if (haveHint && followContact(ownA, posedB, q, Coherence { qa, qb, &memory }, fast)) {
 			expectSame(fast, full, step);
 			EXPECT_TRUE(samePose(afterFull, memory))
 			        << "step " << step << ": followContact decided a step where edgeContact searched";

@@ -18,19 +18,19 @@ using namespace rbsm;
 namespace {
 std::vector<Vec2> rect(Real w, Real h) { return { { -w / 2, -h / 2 }, { w / 2, -h / 2 }, { w / 2, h / 2 }, { -w / 2, h / 2 } }; }
 
-std::vector<Vec2> placed(const std::vector<Vec2>& local, const RelativePose& pose)
+std::vector<Vec2> placed(const std::vector<Vec2>& local, const Pose2& pose)
 {
 	std::vector<Vec2> v;
-	for (const Vec2& x : local) v.push_back(pose.toA(x));
+	for (const Vec2& x : local) v.push_back(pose.place(x));
 	return v;
 }
 
-RelativePose poseOf(Real x, Real y, Real angle) { return RelativePose { Vec2(x, y), std::cos(angle), std::sin(angle) }; }
+Pose2 poseOf(Real x, Real y, Real angle) { return Pose2(Vec2(x, y), std::cos(angle), std::sin(angle)); }
 
 // A scene: A (1 x 0.5) at the origin, B on top of it overlapping by `overlap`, shifted by `shift`.
 struct Pair {
 	std::vector<Vec2> a, bLocal;
-	RelativePose      pose;
+	Pose2      pose;
 	ContactHint       hint;
 	Pair(Real bWidth, Real shift, Real overlap, int refBody)
 	    : a(rect(1.0, 0.5))
@@ -40,7 +40,7 @@ struct Pair {
 		// the shared edge: A's top (edge 2) or B's bottom (edge 0); the hint keeps the chosen one
 		hint = refBody == 1 ? ContactHint { 1, 2 } : ContactHint { 2, 0 };
 	}
-	EdgeContact exact(const RelativePose& p) const { return edgeContact(a, placed(bLocal, p), 0.0, &hint, 1e-3, 0.5); }
+	EdgeContact exact(const Pose2& p) const { return edgeContact(a, placed(bLocal, p), 0.0, &hint, 1e-3, 0.5); }
 };
 
 void expectNear(const Vec2& a, const Vec2& b, Real tol) { EXPECT_LE((a - b).norm(), tol) << a.transpose() << " vs " << b.transpose(); }
@@ -73,7 +73,7 @@ TEST(FrozenContact, ApproachAlongTheNormalIsExact)
 		const Pair          pr(0.6, 0.2, 1e-3, refBody);
 		const FrozenContact f = freezeContact(pr.exact(pr.pose), pr.pose);
 		for (Real dy : { -4e-3, -1e-4, 5e-4 }) { // closer (deeper) and farther (still overlapping)
-			const RelativePose now = poseOf(pr.pose.r.x(), pr.pose.r.y() + dy, 0);
+			const Pose2 now = poseOf(pr.pose.p.x(), pr.pose.p.y() + dy, 0);
 			const EdgeContact  ex = pr.exact(now), fr = frozenContact(f, now);
 			EXPECT_NEAR(fr.d0, ex.d0, 1e-15) << "dy " << dy;
 			EXPECT_NEAR(fr.d1, ex.d1, 1e-15) << "dy " << dy;
@@ -91,7 +91,7 @@ Real worstOverlapError(const Pair& pr, Real eps, std::mt19937& rng, Real* worstL
 	Real                                 worst = 0;
 	for (int trial = 0; trial < 200; ++trial) {
 		const Real         alpha = eps * u(rng), sx = eps * u(rng), sy = 0.2 * eps * u(rng);
-		const RelativePose now   = poseOf(pr.pose.r.x() + sx, pr.pose.r.y() + sy, alpha);
+		const Pose2 now   = poseOf(pr.pose.p.x() + sx, pr.pose.p.y() + sy, alpha);
 		const EdgeContact  ex = pr.exact(now), fr = frozenContact(f, now);
 		if (!ex.touching || ex.refBody != f.refBody) continue;
 		// the exact overlap at the frozen segment's ends: linear along the exact segment
@@ -142,15 +142,15 @@ TEST(FrozenContact, DriftBoundsEveryVertexMotion)
 	for (const Vec2& v : a) rA = std::max(rA, v.norm());
 	for (const Vec2& v : b) rB = std::max(rB, v.norm());
 	for (int trial = 0; trial < 1000; ++trial) {
-		const RelativePose p0 = poseOf(u(rng), 0.5 + u(rng), 3 * u(rng));
+		const Pose2 p0 = poseOf(u(rng), 0.5 + u(rng), 3 * u(rng));
 		const Real         eps = std::pow(10.0, -4 * std::abs(u(rng)));
-		const RelativePose p1  = poseOf(p0.r.x() + eps * u(rng), p0.r.y() + eps * u(rng), std::atan2(p0.sin, p0.cos) + eps * u(rng));
+		const Pose2 p1  = poseOf(p0.p.x() + eps * u(rng), p0.p.y() + eps * u(rng), std::atan2(p0.s, p0.c) + eps * u(rng));
 		FrozenContact      f;
 		f.pose          = p0;
 		const Real drift = frozenDrift(f, p1, rA, rB);
 		Real       moved = 0;
-		for (const Vec2& v : b) moved = std::max(moved, (p1.toA(v) - p0.toA(v)).norm()); // B's vertices in A's frame
-		for (const Vec2& v : a) moved = std::max(moved, (p1.toB(v) - p0.toB(v)).norm()); // A's vertices in B's frame
+		for (const Vec2& v : b) moved = std::max(moved, (p1.place(v) - p0.place(v)).norm()); // B's vertices in A's frame
+		for (const Vec2& v : a) moved = std::max(moved, (p1.applyInverse(v) - p0.applyInverse(v)).norm()); // A's vertices in B's frame
 		EXPECT_GE(drift * (1 + 1e-12), moved) << "trial " << trial;
 	}
 	FrozenContact f;
@@ -161,7 +161,7 @@ TEST(FrozenContact, DriftBoundsEveryVertexMotion)
 TEST(FrozenContact, FreezingNothingIsInvalid)
 {
 	EdgeContact apart; // touching = false
-	EXPECT_FALSE(freezeContact(apart, RelativePose {}).valid);
+	EXPECT_FALSE(freezeContact(apart, Pose2 {}).valid);
 }
 
 TEST(FrozenContact, PackAndUnpackRoundTrip)
@@ -173,7 +173,7 @@ TEST(FrozenContact, PackAndUnpackRoundTrip)
 	EXPECT_EQ(v.size(), 17u);
 	const FrozenContact g = unpackFrozen(v);
 	ASSERT_TRUE(g.valid);
-	const RelativePose now = poseOf(0.21, 0.5 - 1.2e-3, 1e-5);
+	const Pose2 now = poseOf(0.21, 0.5 - 1.2e-3, 1e-5);
 	const EdgeContact  a = frozenContact(f, now), b = frozenContact(g, now);
 	EXPECT_EQ(a.d0, b.d0); // bitwise: a loaded scene continues exactly
 	EXPECT_EQ(a.d1, b.d1);

@@ -1,6 +1,6 @@
 // Gauss-Legendre points on [0,1]: weights sum to 1, polynomial exactness of degree 2n-1, and
 // in particular the force and moment of a linear traction are exact with 2 points.
-#include <pkg/rbsm/kernel/EdgeContact.hpp>
+#include <pkg/rbsm/kernel/IntegrationRule.hpp>
 
 #include <gtest/gtest.h>
 #include <cmath>

@@ -1,4 +1,5 @@
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
+#include <pkg/rbsm/kernel/Pose2.hpp>
 
 #include <cmath>
 #include <sstream>
@@ -148,8 +149,7 @@ MassProperties massProperties(const std::vector<Vec2>& v)
 
 Vec2 rotate(const Vec2& x, Real angle)
 {
-	const Real c = std::cos(angle), s = std::sin(angle);
-	return Vec2(c * x.x() - s * x.y(), s * x.x() + c * x.y());
+	return Pose2(Vec2::Zero(), std::cos(angle), std::sin(angle)).rotate(x);
 }
 
 Vec2 localToWorld(const Vec2& local, const Vec2& pos, Real angle) { return pos + rotate(local, angle); }

@@ -1,6 +1,9 @@
 // Edge-to-edge contact between two convex polygons (the seed paper's Fig. 3 and eqs. (8)-(9)),
 // computed as a Box2D-style contact manifold: separating-axis search + clipping of the
-// incident edge against the reference edge.
+// incident edge against the reference edge. This header: what a caller asks and gets. The search is
+// in EdgeContact.cpp, the clipping in EdgeClip.hpp (kernel-internal), the memory that lets a followed
+// contact skip the search in ContactMemory.{hpp,cpp}, the points along the segment in
+// IntegrationRule.hpp.
 //
 // Conventions (YADE's, relied upon by the plugin):
 //  * body 1 = polygon A, body 2 = polygon B, both CONVEX and COUNTER-CLOCKWISE, WORLD coordinates;
@@ -16,9 +19,9 @@
 // reference line (eq. (9)).
 #pragma once
 
+#include <pkg/rbsm/kernel/Pose2.hpp>
 #include <pkg/rbsm/kernel/Types.hpp>
 
-#include <cmath>
 #include <vector>
 
 namespace rbsm {
@@ -58,78 +61,17 @@ struct PolygonView {
 	int         n   = 0;
 };
 
-/// Pose of a rigid block (world frame): centroid, cos and sin of its rotation angle, and its
-/// circumradius about the centroid (m). Needed only for the temporal coherence below.
-struct BlockPose {
-	Vec2 centroid = Vec2::Zero();
-	Real cos = 1, sin = 0;
-	Real radius = 0;
+/// What a contact is asked (the inputs of edgeContact and followContact below): the reach
+/// maxSeparation (m, >= 0), the hint (the previous step's reference edge, or null), the hysteresis
+/// (a fraction of minSize) and minSize (m, > 0 for the PolygonView form).
+struct ContactQuery {
+	Real               maxSeparation = 0;
+	const ContactHint* hint          = nullptr;
+	Real               hysteresis    = 1e-3;
+	Real               minSize       = -1;
 };
 
-/// Certificates for the clipping of a kept reference edge (clipOn in EdgeContact.cpp), taken at the
-/// search of a SearchMemory (below): which work of the clip cannot change the result while every
-/// point of either block has moved by less than `radius` relative to the other since then (the drift
-/// D of SearchMemory's skip rule) and the relative rotation's chord χ is within the margins below.
-/// Each skipped test would have left the segment unchanged, so the result is the full clip's, bit for
-/// bit.
-///  * the incident edge: the facing dots nI·nRef change by at most χ, so an edge that faced more
-///    squarely than any other by incLead > 2χ still does, and the edges facing along +nRef
-///    (clip (iv)) are the same while χ is below the margin (0.05) by which their dots were above
-///    the threshold then (`facing`), those within it (`unsure`) being tested again;
-///  * clip (iii) by an edge j of the reference polygon acts only where an incident end lies beyond
-///    it, nR[j]·(q − R[j]) > maxSep; the ends move by at most D, so an edge they were at least
-///    `radius` inside (bit j of quietR) still does not act (maxSep > 0);
-///  * clip (iv) by an edge j of the incident polygon tests the feet f = q + g nRef of the ends on
-///    the reference line, which move by at most 2D relative to it (|Δg| ≤ D, and |g| χ ≤ D since
-///    |g| ≤ R_A + R_B + |r| and χ < 1): bit j of quietI, at least 2 radius inside;
-///  * the separation of the reference edge, the smallest nRef·(w − r0) over incident vertices w,
-///    is at an end of the incident edge while every other vertex was 2 radius farther
-///    (supportOnInc; each term moves by at most D).
-/// Only for polygons of at most 64 edges (bit masks); incEdge = -1: no certificate.
-struct ClipCertificate {
-	int      incEdge      = -1;
-	Real     incLead      = 0;
-	uint64_t facing = 0, unsure = 0;
-	uint64_t quietR = 0, quietI = 0;
-	bool     supportOnInc = false;
-	Real     radius       = 0; ///< m; a step whose drift reaches it searches again (same result) and renews them
-};
-
-/// What a full separating-axis search leaves for the next steps of the same contact (temporal
-/// coherence, in the spirit of Box2D's and Bullet's cached separating axes, but exact): the edge it
-/// chose, its two closest rivals (for two blocks sharing an edge, the other block's twin edge has
-/// the same separation: it must be watched exactly, not bounded), the largest separation of all the
-/// remaining edges at that moment, and the pose of B relative to A then. While the chosen edge's
-/// separation now is within the hysteresis of its rivals' (recomputed) and of that old maximum plus
-/// the largest change a rigid motion since then can have made of any separation (see edgeContact),
-/// a new full search would choose the same edge again, so it is skipped: the result is identical to
-/// the full search, only cheaper. Owned by the caller (one per contact); a default-constructed
-/// (invalid) memory forces a full search.
-struct SearchMemory {
-	bool valid   = false;
-	int  refBody = 0, refEdge = -1;
-	int  rivalBody[2] = { 0, 0 }, rivalEdge[2] = { -1, -1 }; ///< the two next-best edges (body 0: none)
-	Real rivalLead[2] = { 0, 0 };  ///< their separation minus the chosen edge's at the search (m)
-	Real maxOther = 0;            ///< largest separation of all other edges at the search (m)
-	Vec2 rel      = Vec2::Zero(); ///< centroid of B in A's frame at the search (m)
-	Real relCos = 1, relSin = 0;  ///< rotation of B relative to A at the search
-	ClipCertificate clip;         ///< what the clip of the kept edge may skip (see above)
-};
-
-/// Upper bound (m) of how far any point of either block can have moved relative to the other since
-/// an earlier pose: B at (rel, relCos, relSin) in A's frame now, at (rel0, cos0, sin0) then. In A's
-/// frame B's points move by at most |Δr| + χ R_B, in B's frame A's by at most |Δr| + χ (R_A + |r|),
-/// χ the chord of the relative rotation; every Euclidean norm is bounded by the L1 norm
-/// (|x| + |y| ≥ √(x² + y²)), a looser but still rigorous bound without square roots:
-///     |Δr|₁ + χ₁ (R_A + R_B + |r0|₁).
-/// Used by edgeContact's skip of the search (SearchMemory) and by the frozen kinematics
-/// (FrozenContact.hpp). radiusA, radiusB: circumradii (m).
-inline Real relativeMotionBound(const Vec2& rel, Real relCos, Real relSin, const Vec2& rel0, Real cos0, Real sin0, Real radiusA, Real radiusB)
-{
-	auto       l1    = [](const Vec2& v) { return std::abs(v.x()) + std::abs(v.y()); };
-	const Real chord = std::abs(relCos - cos0) + std::abs(relSin - sin0);
-	return l1(rel - rel0) + chord * (radiusA + radiusB + l1(rel0));
-}
+struct Coherence; // ContactMemory.hpp: the blocks' poses and the contact's memory
 
 /// Round-off slop of the contact tests (m): 1e-12 of minSize, the smaller block's size. An exactly
 /// shared edge moved by a rigid motion has overlaps |d| ~ 1e-16 size, which must still count as
@@ -162,6 +104,7 @@ inline Real roundOffSlop(Real minSize) { return 1e-12 * minSize; }
 /// minSize (m): the size that scales the hysteresis and the round-off slop; by default (< 0) the
 /// smaller of the two polygons' bounding-box sizes (polygonSize), which a caller that knows its
 /// blocks' sizes can pass to save that work in a hot loop.
+/// hint: the reference edge of the previous step, or null.
 EdgeContact edgeContact(
         const std::vector<Vec2>& A,
         const std::vector<Vec2>& B,
@@ -171,8 +114,8 @@ EdgeContact edgeContact(
         Real                     minSize    = -1);
 
 /// The same contact for a caller that follows it from step to step (the plugin's Ig2): polygons
-/// as views with their edge normals, minSize > 0 given, and optionally the poses of the two blocks
-/// and the contact's SearchMemory (both or neither), which enable the skip of the search:
+/// as views with their edge normals, q.minSize > 0 given, and optionally the poses of the two blocks
+/// and the contact's SearchMemory (Coherence, ContactMemory.hpp), which enable the skip of the search:
 ///
 /// Skip rule. In A's frame, B's vertices move by at most |Δr| + χ R_B since the memory's search,
 /// where Δr is the change of B's centroid in A's frame and χ = |(cosθ', sinθ') − (cosθ, sinθ)|
@@ -186,56 +129,19 @@ EdgeContact edgeContact(
 /// If its clipped segment is empty, the full search runs (and decides as it always does).
 /// The clip of the kept edge skips what the search's ClipCertificate proves idle; once D reaches the
 /// certificates' radius (2 % of minSize) the search runs again, with the same result, and renews them.
-EdgeContact edgeContact(
-        const PolygonView& A,
-        const PolygonView& B,
-        Real               maxSeparation,
-        const ContactHint* hint,
-        Real               hysteresis,
-        Real               minSize,
-        const BlockPose*   poseA  = nullptr,
-        const BlockPose*   poseB  = nullptr,
-        SearchMemory*      memory = nullptr);
+EdgeContact edgeContact(const PolygonView& A, const PolygonView& B, const ContactQuery& q, Coherence* coherence = nullptr);
 
 /// A block's polygon in its own frame (vertices about its centroid and edge normals, as a
-/// PolygonView) and its pose in the frame a contact is computed in: rotation (cos, sin), then
-/// translation pos. A vertex or normal is placed when asked, by the one formula place() uses too.
+/// PolygonView) and its pose in the frame a contact is computed in. A vertex or normal is placed
+/// when asked, by the one formula place() uses too (Pose2::place, Pose2::rotate).
 struct PosedPolygon {
 	PolygonView local;
-	Vec2        pos = Vec2::Zero();
-	Real        cos = 1, sin = 0;
-	Vec2        vertex(int i) const
-	{
-		const Vec2& v = local.v[i];
-		return Vec2(pos.x() + cos * v.x() - sin * v.y(), pos.y() + sin * v.x() + cos * v.y());
-	}
-	Vec2 normal(int i) const
-	{
-		const Vec2& e = local.nrm[i];
-		return Vec2(cos * e.x() - sin * e.y(), sin * e.x() + cos * e.y());
-	}
+	Pose2       pose;
+	Vec2        vertex(int i) const { return pose.place(local.v[i]); }
+	Vec2        normal(int i) const { return pose.rotate(local.nrm[i]); }
 	/// Every vertex, then every normal, into out (2 n entries): the placed polygon.
 	PolygonView place(Vec2* out) const;
 };
-
-/// The step of a followed contact when its memory certifies it: edgeContact(A, B.place(...),
-/// maxSeparation, &hint, hysteresis, minSize, &poseA, &poseB, &memory) bit for bit, from the few
-/// vertices and edges of B that the skip rule and the clip certificates (ClipCertificate) leave to
-/// test, placed one by one instead of all of B. Returns false where they do not decide the step (no
-/// memory of this edge, the certificates outgrown or not holding, the search needed, nothing left on
-/// the edge); then c is unspecified, and the caller places B and calls edgeContact. The memory is
-/// only read: every step it decides, edgeContact would decide without searching.
-bool followContact(
-        const PolygonView&  A,
-        const PosedPolygon& B,
-        Real                maxSeparation,
-        const ContactHint&  hint,
-        Real                hysteresis,
-        Real                minSize,
-        const BlockPose&    poseA,
-        const BlockPose&    poseB,
-        const SearchMemory& memory,
-        EdgeContact&        c);
 
 /// Cheap rejection of a pair that edgeContact would find apart: true if some edge of either polygon
 /// separates them by more than maxSeparation + 2 slop (roundOffSlop above: edgeContact's round-off
@@ -244,26 +150,5 @@ bool followContact(
 /// its separation exceeds maxSeparation + slop. For the potential interactions of the collider
 /// (bounding boxes overlap, blocks apart), which YADE hands to the geometry functor at every step.
 bool separatedBeyond(const PolygonView& A, const PolygonView& B, Real maxSeparation, Real minSize);
-
-/// Most integration points a contact can have (Ig2_Polygon2D_Polygon2D_RbsmGeom.nIP is 1..8):
-/// per-point state is stored inline, without a heap block per contact.
-constexpr int kMaxIntegrationPoints = 8;
-
-/// A Gauss-Legendre rule on the contact segment: n points at parametric positions s[k] in [0,1]
-/// from p0 to p1 (increasing), weights w[k] summing to 1, so that
-///     integral over the segment of f = length * sum_k w_k f(s_k).
-/// An n-point rule integrates polynomials of degree 2n-1 exactly; for n = 2 the points are
-/// s = 1/2 -+ 1/(2 sqrt 3) with w = 1/2 each, exact up to degree 3, hence exact for the force
-/// (degree 1) AND the moment (degree 2) of a linearly varying traction.
-struct IntegrationRule {
-	int  n = 0;
-	Real s[kMaxIntegrationPoints] = {};
-	Real w[kMaxIntegrationPoints] = {};
-};
-
-/// The rule of nIP points, nIP in 1..8 (throws std::invalid_argument otherwise). The rules are
-/// computed once (Newton iteration on the Legendre polynomials) and live as long as the program,
-/// so a contact may keep a pointer to its rule.
-const IntegrationRule& integrationRule(int nIP);
 
 } // namespace rbsm

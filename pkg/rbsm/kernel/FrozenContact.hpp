@@ -28,9 +28,10 @@
 // length error O(tol·size). Unit tests: tests/unit/test_frozen_contact.cpp.
 //
 // Frames: everything is computed in block A's (body 1's) frame, where B has the relative pose
-// (r, cos, sin) of RelativePose. Units: metres.
+// `pose` (a Pose2: B's centroid in A's frame, cos and sin of θB − θA; Pose2::relative). Units: metres.
 #pragma once
 
+#include <pkg/rbsm/kernel/ContactMemory.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 
 #include <algorithm>
@@ -38,20 +39,6 @@
 #include <vector>
 
 namespace rbsm {
-
-/// Pose of block B relative to block A: B's centroid in A's frame, cos and sin of θB − θA.
-struct RelativePose {
-	Vec2 r = Vec2::Zero();
-	Real cos = 1, sin = 0;
-	Vec2 toA(const Vec2& xiB) const { return Vec2(r.x() + cos * xiB.x() - sin * xiB.y(), r.y() + sin * xiB.x() + cos * xiB.y()); }
-	Vec2 dirToA(const Vec2& vB) const { return Vec2(cos * vB.x() - sin * vB.y(), sin * vB.x() + cos * vB.y()); }
-	Vec2 toB(const Vec2& xA) const
-	{
-		const Vec2 d = xA - r;
-		return Vec2(cos * d.x() + sin * d.y(), -sin * d.x() + cos * d.y());
-	}
-	Vec2 dirToB(const Vec2& vA) const { return Vec2(cos * vA.x() + sin * vA.y(), -sin * vA.x() + cos * vA.y()); }
-};
 
 /// The material points of a contact at its last exact update (see above).
 struct FrozenContact {
@@ -62,11 +49,11 @@ struct FrozenContact {
 	Vec2         p0 = Vec2::Zero(), p1 = Vec2::Zero(); ///< segment ends, reference block's frame
 	Vec2         q0 = Vec2::Zero(), q1 = Vec2::Zero(); ///< their partners, incident block's frame
 	Real         length = 0;                           ///< |p1 − p0| (rigid: unchanged)
-	RelativePose pose;                                 ///< B relative to A at the update
+	Pose2        pose;                                 ///< B relative to A at the update
 };
 
 /// Freezes the exact contact c (A's frame, from edgeContact) of blocks at relative pose `pose`.
-inline FrozenContact freezeContact(const EdgeContact& c, const RelativePose& pose)
+inline FrozenContact freezeContact(const EdgeContact& c, const Pose2& pose)
 {
 	FrozenContact f;
 	if (!c.touching || (c.refBody != 1 && c.refBody != 2)) return f;
@@ -78,9 +65,9 @@ inline FrozenContact freezeContact(const EdgeContact& c, const RelativePose& pos
 	f.pose    = pose;
 	if (c.refBody == 1) {
 		f.nRef = nRef, f.p0 = c.p0, f.p1 = c.p1;
-		f.q0 = pose.toB(q0), f.q1 = pose.toB(q1);
+		f.q0 = pose.applyInverse(q0), f.q1 = pose.applyInverse(q1);
 	} else {
-		f.nRef = pose.dirToB(nRef), f.p0 = pose.toB(c.p0), f.p1 = pose.toB(c.p1);
+		f.nRef = pose.unrotate(nRef), f.p0 = pose.applyInverse(c.p0), f.p1 = pose.applyInverse(c.p1);
 		f.q0 = q0, f.q1 = q1;
 	}
 	f.valid = true;
@@ -88,24 +75,24 @@ inline FrozenContact freezeContact(const EdgeContact& c, const RelativePose& pos
 }
 
 /// How far any point of either block can have moved relative to the other since the update (m):
-/// relativeMotionBound (EdgeContact.hpp), the bound of edgeContact's coherence. radiusA, radiusB:
+/// relativeMotionBound (ContactMemory.hpp), the bound of edgeContact's coherence. radiusA, radiusB:
 /// circumradii (m).
-inline Real frozenDrift(const FrozenContact& f, const RelativePose& now, Real radiusA, Real radiusB)
+inline Real frozenDrift(const FrozenContact& f, const Pose2& now, Real radiusA, Real radiusB)
 {
-	return relativeMotionBound(now.r, now.cos, now.sin, f.pose.r, f.pose.cos, f.pose.sin, radiusA, radiusB);
+	return relativeMotionBound(now, f.pose, radiusA, radiusB);
 }
 
 /// The contact at relative pose `now` from the material points (A's frame; EdgeContact's fields
 /// and conventions; separation = −max(d0, d1), the deepest overlap of the segment's ends).
-inline EdgeContact frozenContact(const FrozenContact& f, const RelativePose& now)
+inline EdgeContact frozenContact(const FrozenContact& f, const Pose2& now)
 {
 	EdgeContact c;
 	Vec2        nRef, p0, p1, q0, q1;
 	if (f.refBody == 1) {
 		nRef = f.nRef, p0 = f.p0, p1 = f.p1;
-		q0 = now.toA(f.q0), q1 = now.toA(f.q1);
+		q0 = now.place(f.q0), q1 = now.place(f.q1);
 	} else {
-		nRef = now.dirToA(f.nRef), p0 = now.toA(f.p0), p1 = now.toA(f.p1);
+		nRef = now.rotate(f.nRef), p0 = now.place(f.p0), p1 = now.place(f.p1);
 		q0 = f.q0, q1 = f.q1;
 	}
 	c.d0         = -nRef.dot(q0 - p0);
@@ -130,7 +117,7 @@ inline std::vector<Real> packFrozen(const FrozenContact& f)
 {
 	if (!f.valid) return {};
 	return { Real(f.refBody), Real(f.refEdge), f.nRef.x(), f.nRef.y(), f.p0.x(), f.p0.y(), f.p1.x(), f.p1.y(), f.q0.x(), f.q0.y(),
-		 f.q1.x(),        f.q1.y(),        f.length,   f.pose.r.x(), f.pose.r.y(), f.pose.cos, f.pose.sin };
+		 f.q1.x(),        f.q1.y(),        f.length,   f.pose.p.x(), f.pose.p.y(), f.pose.c, f.pose.s };
 }
 
 /// Inverse of packFrozen; anything else (empty, another length, a reference body other than 1 or 2)
@@ -147,9 +134,9 @@ inline FrozenContact unpackFrozen(const std::vector<Real>& v)
 	f.q0       = Vec2(v[8], v[9]);
 	f.q1       = Vec2(v[10], v[11]);
 	f.length   = v[12];
-	f.pose.r   = Vec2(v[13], v[14]);
-	f.pose.cos = v[15];
-	f.pose.sin = v[16];
+	f.pose.p   = Vec2(v[13], v[14]);
+	f.pose.c   = v[15];
+	f.pose.s   = v[16];
 	f.valid    = true;
 	return f;
 }

@@ -221,6 +221,102 @@ std::vector<Point> randomSites(const Polygon& region_, std::size_t n, std::uint6
 	return sites;
 }
 
+namespace {
+	// 1. Delaunay triangulation of the sites and four guard sites far outside (see the header).
+	void triangulateWithGuards(DT& dt, const CGAL::Bbox_2& rbb, const std::vector<Point>& sites)
+	{
+		double xmin = rbb.xmin(), xmax = rbb.xmax(), ymin = rbb.ymin(), ymax = rbb.ymax();
+		for (const auto& s : sites) {
+			xmin = std::min(xmin, s[0]), xmax = std::max(xmax, s[0]);
+			ymin = std::min(ymin, s[1]), ymax = std::max(ymax, s[1]);
+		}
+		const double D = std::hypot(xmax - xmin, ymax - ymin), cx = 0.5 * (xmin + xmax), cy = 0.5 * (ymin + ymax);
+		for (int gx = -1; gx <= 1; gx += 2)
+			for (int gy = -1; gy <= 1; gy += 2) dt.insert(P2(cx + gx * 4 * D, cy + gy * 4 * D));
+		for (std::size_t i = 0; i < sites.size(); ++i) {
+			auto v = dt.insert(P2(sites[i][0], sites[i][1]));
+			if (v->info().id < 0) v->info().id = int(i); // a repeated site keeps its first index
+		}
+	}
+
+	// 2.-4. Each real site's Voronoi cell clipped to the region, without straight vertices, in convex
+	// pieces (site, exact piece); counts cells and split cells into out.
+	std::vector<std::pair<int, std::vector<P2>>> clippedPieces(const DT& dt, const Poly& regionPoly, Tessellation& out)
+	{
+		const auto                                   rbb = regionPoly.bbox();
+		std::vector<std::pair<int, std::vector<P2>>> pieces; // (site, exact convex piece)
+		for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+			if (v->info().id < 0) continue; // guard
+			std::vector<P2> cellPts;
+			auto fc = dt.incident_faces(v), done = fc;
+			do {
+				if (dt.is_infinite(fc)) throw std::logic_error("voronoiClip: unbounded cell of a real site (guard sites too near)");
+				const P2 c = dt.circumcenter(fc);
+				if (cellPts.empty() || cellPts.back() != c) cellPts.push_back(c); // cocircular sites: same centre
+			} while (++fc != done);
+			while (cellPts.size() > 1 && cellPts.front() == cellPts.back()) cellPts.pop_back();
+			if (cellPts.size() < 3) throw std::logic_error("voronoiClip: degenerate Voronoi cell");
+			const Poly cell(cellPts.begin(), cellPts.end());
+			if (!CGAL::do_overlap(cell.bbox(), rbb)) continue;
+
+			// 2. clip to the region
+			std::vector<PolyH> clipped;
+			CGAL::intersection(cell, regionPoly, std::back_inserter(clipped));
+			if (!clipped.empty()) ++out.cells;
+			for (const auto& ph : clipped) {
+				if (ph.number_of_holes() != 0) throw std::logic_error("voronoiClip: a clipped cell has a hole");
+				// 3. straight vertices (collinear vertices of the region's outline) out
+				std::vector<P2> v3 = dropStraight(ph.outer_boundary().container());
+				if (v3.size() < 3) continue;
+				Poly p3(v3.begin(), v3.end());
+				if (!p3.is_simple()) {
+					std::ostringstream o;
+					o << "a clipped Voronoi cell is not simple (it touches itself); site " << v->info().id << ": try another seed";
+					throw std::runtime_error(o.str());
+				}
+				if (p3.orientation() != CGAL::COUNTERCLOCKWISE) std::reverse(v3.begin(), v3.end());
+				// 4. convex pieces
+				bool split = false;
+				for (auto& c : convexPieces(v3, split)) pieces.emplace_back(v->info().id, std::move(c));
+				if (split) ++out.split;
+			}
+		}
+		return pieces;
+	}
+
+	// 5. one rounding per exact point; then the check Polygon2D makes: blocks (or dropped) into out.
+	void roundPieces(const std::vector<std::pair<int, std::vector<P2>>>& pieces, double minArea, Tessellation& out)
+	{
+		std::map<P2, Point> rounded; // P2 ordered lexicographically (exact comparison)
+		for (const auto& pc : pieces) {
+			Polygon poly;
+			for (const auto& p : pc.second) {
+				auto it = rounded.find(p);
+				if (it == rounded.end()) it = rounded.emplace(p, round(p)).first;
+				if (poly.empty() || poly.back() != it->second) poly.push_back(it->second);
+			}
+			while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+			std::vector<Vec2> ev;
+			for (const auto& p : poly) ev.emplace_back(p[0], p[1]);
+			const double area = CGAL::to_double(Poly(pc.second.begin(), pc.second.end()).area().exact());
+			const std::string problem = polygonProblem(ev);
+			if (area < minArea) {
+				++out.dropped;
+				out.droppedArea += area;
+				continue;
+			}
+			if (!problem.empty()) {
+				std::ostringstream o;
+				o << "a block of the tessellation is degenerate after rounding to double (" << problem << "), area " << area << " > min_area "
+				  << minArea << ": " << where(poly) << "; raise min_area or try another seed";
+				throw std::runtime_error(o.str());
+			}
+			out.blocks.push_back(std::move(poly));
+			out.site.push_back(pc.first);
+		}
+	}
+} // namespace
+
 Tessellation voronoiClip(const Polygon& region_, const std::vector<Point>& sites, double minArea)
 {
 	const Polygon region = counterClockwise(region_);
@@ -233,91 +329,11 @@ Tessellation voronoiClip(const Polygon& region_, const std::vector<Point>& sites
 		}
 	if (!(std::isfinite(minArea) && minArea >= 0)) throw std::invalid_argument("min_area must be a finite number >= 0");
 
-	const Poly  regionPoly = toExact(region);
-	const auto  rbb        = regionPoly.bbox();
-
-	// 1. Delaunay triangulation of the sites and four guard sites far outside (see the header).
-	double xmin = rbb.xmin(), xmax = rbb.xmax(), ymin = rbb.ymin(), ymax = rbb.ymax();
-	for (const auto& s : sites) {
-		xmin = std::min(xmin, s[0]), xmax = std::max(xmax, s[0]);
-		ymin = std::min(ymin, s[1]), ymax = std::max(ymax, s[1]);
-	}
-	const double D = std::hypot(xmax - xmin, ymax - ymin), cx = 0.5 * (xmin + xmax), cy = 0.5 * (ymin + ymax);
-	DT dt;
-	for (int gx = -1; gx <= 1; gx += 2)
-		for (int gy = -1; gy <= 1; gy += 2) dt.insert(P2(cx + gx * 4 * D, cy + gy * 4 * D));
-	for (std::size_t i = 0; i < sites.size(); ++i) {
-		auto v = dt.insert(P2(sites[i][0], sites[i][1]));
-		if (v->info().id < 0) v->info().id = int(i); // a repeated site keeps its first index
-	}
-
+	const Poly regionPoly = toExact(region);
+	DT         dt;
+	triangulateWithGuards(dt, regionPoly.bbox(), sites);
 	Tessellation out;
-	std::vector<std::pair<int, std::vector<P2>>> pieces; // (site, exact convex piece)
-	for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
-		if (v->info().id < 0) continue; // guard
-		std::vector<P2> cellPts;
-		auto fc = dt.incident_faces(v), done = fc;
-		do {
-			if (dt.is_infinite(fc)) throw std::logic_error("voronoiClip: unbounded cell of a real site (guard sites too near)");
-			const P2 c = dt.circumcenter(fc);
-			if (cellPts.empty() || cellPts.back() != c) cellPts.push_back(c); // cocircular sites: same centre
-		} while (++fc != done);
-		while (cellPts.size() > 1 && cellPts.front() == cellPts.back()) cellPts.pop_back();
-		if (cellPts.size() < 3) throw std::logic_error("voronoiClip: degenerate Voronoi cell");
-		const Poly cell(cellPts.begin(), cellPts.end());
-		if (!CGAL::do_overlap(cell.bbox(), rbb)) continue;
-
-		// 2. clip to the region
-		std::vector<PolyH> clipped;
-		CGAL::intersection(cell, regionPoly, std::back_inserter(clipped));
-		if (!clipped.empty()) ++out.cells;
-		for (const auto& ph : clipped) {
-			if (ph.number_of_holes() != 0) throw std::logic_error("voronoiClip: a clipped cell has a hole");
-			// 3. straight vertices (collinear vertices of the region's outline) out
-			std::vector<P2> v3 = dropStraight(ph.outer_boundary().container());
-			if (v3.size() < 3) continue;
-			Poly p3(v3.begin(), v3.end());
-			if (!p3.is_simple()) {
-				std::ostringstream o;
-				o << "a clipped Voronoi cell is not simple (it touches itself); site " << v->info().id << ": try another seed";
-				throw std::runtime_error(o.str());
-			}
-			if (p3.orientation() != CGAL::COUNTERCLOCKWISE) std::reverse(v3.begin(), v3.end());
-			// 4. convex pieces
-			bool split = false;
-			for (auto& c : convexPieces(v3, split)) pieces.emplace_back(v->info().id, std::move(c));
-			if (split) ++out.split;
-		}
-	}
-
-	// 5. one rounding per exact point; then the check Polygon2D makes.
-	std::map<P2, Point> rounded; // P2 ordered lexicographically (exact comparison)
-	for (const auto& pc : pieces) {
-		Polygon poly;
-		for (const auto& p : pc.second) {
-			auto it = rounded.find(p);
-			if (it == rounded.end()) it = rounded.emplace(p, round(p)).first;
-			if (poly.empty() || poly.back() != it->second) poly.push_back(it->second);
-		}
-		while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
-		std::vector<Vec2> ev;
-		for (const auto& p : poly) ev.emplace_back(p[0], p[1]);
-		const double area = CGAL::to_double(Poly(pc.second.begin(), pc.second.end()).area().exact());
-		const std::string problem = polygonProblem(ev);
-		if (area < minArea) {
-			++out.dropped;
-			out.droppedArea += area;
-			continue;
-		}
-		if (!problem.empty()) {
-			std::ostringstream o;
-			o << "a block of the tessellation is degenerate after rounding to double (" << problem << "), area " << area << " > min_area "
-			  << minArea << ": " << where(poly) << "; raise min_area or try another seed";
-			throw std::runtime_error(o.str());
-		}
-		out.blocks.push_back(std::move(poly));
-		out.site.push_back(pc.first);
-	}
+	roundPieces(clippedPieces(dt, regionPoly, out), minArea, out);
 	return out;
 }
 

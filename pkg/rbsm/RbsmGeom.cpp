@@ -1,0 +1,66 @@
+#include <pkg/rbsm/RbsmGeom.hpp>
+#include <core/Omega.hpp>
+#include <core/Scene.hpp>
+
+#include <stdexcept>
+#include <string>
+
+namespace yade {
+
+YADE_PLUGIN((RbsmGeom));
+
+void RbsmGeom::exactAt(const rbsm::EdgeContact& c, const rbsm::Pose2& rel, bool keepFrozen)
+{
+	if (keepFrozen) frozen = rbsm::freezeContact(c, rel);
+	else frozen.valid = false;
+	frozenSteps = 0;
+}
+
+void RbsmGeom::markLost(Real separationNow)
+{
+	lost         = true;
+	separation   = separationNow;
+	frozen.valid = false;
+}
+
+void RbsmGeom::postLoad(RbsmGeom&)
+{
+	frozen = rbsm::unpackFrozen(frozenState);
+	if (nIP > 0) setIntegrationPoints(nIP); // throws for a file with nIP outside 1..8
+	else rule = nullptr;
+}
+
+Vector2r RbsmGeom::point(int k) const
+{
+	if (k < 0 || k >= nPoints()) throw std::out_of_range("RbsmGeom.point: index " + std::to_string(k) + " outside 0.." + std::to_string(nPoints() - 1));
+	return p0 + rule->s[k] * (p1 - p0);
+}
+
+namespace {
+	template <class F> std::vector<Real> perPoint(const RbsmGeom& g, F f)
+	{
+		std::vector<Real> v(g.nPoints());
+		for (int k = 0; k < g.nPoints(); k++)
+			v[k] = f(k, g.rule->s[k]);
+		return v;
+	}
+}
+
+std::vector<Real> RbsmGeom::pyPositions() const { return perPoint(*this, [](int, Real s) { return s; }); }
+std::vector<Real> RbsmGeom::pyWeights() const { return perPoint(*this, [this](int k, Real) { return rule->w[k]; }); }
+std::vector<Real> RbsmGeom::pyDeltaN() const { return perPoint(*this, [k = kinematics()](int, Real s) { return k.overlap(s); }); }
+std::vector<Real> RbsmGeom::pyNormalVelocity() const
+{
+	return perPoint(*this, [k = kinematics(), this](int, Real s) { return -k.velocity(s).dot(normal); });
+}
+std::vector<Real> RbsmGeom::pyShearVelocity() const
+{
+	return perPoint(*this, [k = kinematics(), this](int, Real s) { return k.velocity(s).dot(tangent()); });
+}
+std::vector<Real> RbsmGeom::pyShearIncrement() const
+{
+	const Real dt = Omega::instance().getScene()->dt;
+	return perPoint(*this, [k = kinematics(), dt, this](int, Real s) { return k.velocity(s).dot(tangent()) * dt; });
+}
+
+} // namespace yade
