@@ -33,6 +33,8 @@ ap.add_argument("--seed", type=int, default=1)
 ap.add_argument("--png", default="", help="path prefix of the mechanism drawings")
 ap.add_argument("--cache", default=None, help="calibration cache directory")
 ap.add_argument("--no-density-scaling", action="store_true", help="settle and reduce at the dynamic step")
+ap.add_argument("--d-fail", type=float, default=0.1, help="strength reduction's runaway displacement [m]")
+ap.add_argument("--max-steps", type=int, default=8000, help="steps of a trial (x 3 without density scaling)")
 args = ap.parse_args(sys.argv[1:])
 
 H, gamma, young, poisson = 10.0, 20e3, 100e6, 0.3
@@ -67,8 +69,8 @@ broken = sum(1 for I in O.interactions if I.isReal and I.phys.nIntact < len(I.ph
 print("%d blocks, %d joints; gravity stage %s after %d steps, %d joints broken" % (len(sb.free), nj,
       "converged" if ok else "NOT converged", steps, broken))
 # unscaled, the step is about 3 x shorter: the same simulated time per trial takes 3 x the steps
-r = strength_reduction(start=1.4, grow=1.2, rtol=0.02, density_scaling=ds, max_steps=8000 if ds else 24000, check=200,
-                       d_fail=0.1,
+r = strength_reduction(start=1.4, grow=1.2, rtol=0.02, density_scaling=ds,
+                       max_steps=args.max_steps if ds else 3 * args.max_steps, check=200, d_fail=args.d_fail,
                        calibration=cal, soil=(c, phi) if cal else None, png=args.png or None)
 wall = time.time() - t0
 print("%s; %.0f s wall" % (r, wall))
