@@ -92,6 +92,8 @@ void RbsmTimeStepper::postLoad(RbsmTimeStepper&)
 {
 	if (!(safetyFactor > 0 && safetyFactor <= 1))
 		throw std::invalid_argument("RbsmTimeStepper.safetyFactor: must be in (0, 1] (got " + std::to_string(safetyFactor) + ")");
+	if (!(impactSafety > 0 && impactSafety <= 1))
+		throw std::invalid_argument("RbsmTimeStepper.impactSafety: must be in (0, 1] (got " + std::to_string(impactSafety) + ")");
 	if (interval < 1) throw std::invalid_argument("RbsmTimeStepper.interval: must be >= 1 (got " + std::to_string(interval) + ")");
 	if (!(maxDt > 0)) throw std::invalid_argument("RbsmTimeStepper.maxDt: must be > 0 (got " + std::to_string(maxDt) + ")");
 	if (!(std::isfinite(maxStepMotion) && maxStepMotion >= 0))
@@ -111,6 +113,10 @@ bool RbsmTimeStepper::jointAsDynContact(const Interaction& I, int body1, int bod
 	c.tangent = g->tangent();
 	c.kn      = p->kn;
 	c.ks      = p->ks;
+	if (mayImpact(I, *p)) { // its ω scaled so that safetyFactor gives impactSafety's step
+		const Real s = (safetyFactor / impactSafety) * (safetyFactor / impactSafety);
+		c.kn *= s, c.ks *= s;
+	}
 	Vector2r q0 = g->p0, q1 = g->p1;
 	const auto&      bodies = scene->bodies->body;
 	const Body&      ref    = *bodies[g->refBody == 2 ? I.getId2() : I.getId1()];
@@ -134,6 +140,14 @@ bool RbsmTimeStepper::jointAsDynContact(const Interaction& I, int body1, int bod
 	}
 	return true;
 }
+
+// A frictional joint can open and close: an impact, which the central-difference step resolves
+// accurately only in many steps (impactSafety). Bonded joints never open unbroken, and a damped
+// (quasi-static) stage needs equilibrium, not restitution: safetyFactor is enough for them.
+// Accuracy, not stability: only the step the stepper sets (setDt) takes it; a checked O.dt is not refused for it.
+bool RbsmTimeStepper::impactsMatter() const { return setDt && impactSafety < safetyFactor && !(newtonDamping > 0); }
+
+bool RbsmTimeStepper::mayImpact(const Interaction&, const RbsmPhys& p) const { return impactsMatter() && p.nIntact() == 0; }
 
 // Joint dashpots (Law2's dampingRatio) lower the limit of the central-difference scheme, whose
 // velocity is half a step behind: dt ≤ (2/ω)(√(1+ξ²) − ξ) for a mode of frequency ω and damping
@@ -336,10 +350,10 @@ void RbsmTimeStepper::fullCheck()
 	for (const auto& b : scene->bodies->body)
 		if (b)
 			if (const Polygon2D* poly = polygonOf(*b)) inradius[b->id] = rbsm::centroidInradius(poly->vertices);
+	const Real d   = newtonAttribute<Real>(*scene, "damping", 0);
+	newtonDamping  = std::isfinite(d) && d > 0 ? d : 0; // (read first: the estimate asks whether impacts matter)
 	estimate();
 	firstContactDt = firstContactEstimate();
-	const Real d   = newtonAttribute<Real>(*scene, "damping", 0);
-	newtonDamping  = std::isfinite(d) && d > 0 ? d : 0;
 	newtonGravityRead = false; // read again by the next applyMassScale
 	if (densityScaling) scaleMasses();
 }
@@ -467,7 +481,8 @@ void RbsmTimeStepper::keepBoundsAhead()
 Real RbsmTimeStepper::stableDt() const
 {
 	if (densityScaling && massScaled) return scaledDt; // the blocks below it are scaled up to it
-	return safetyFactor * std::min(criticalDt, firstContactDt) / std::sqrt(1 + newtonDamping);
+	const Real firstSafety = impactsMatter() ? impactSafety : safetyFactor;
+	return std::min(safetyFactor * criticalDt, firstSafety * firstContactDt) / std::sqrt(1 + newtonDamping);
 }
 
 Real RbsmTimeStepper::limit()

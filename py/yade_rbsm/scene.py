@@ -6,7 +6,7 @@ from .checks import count, number
 __all__ = ["engines", "critical_time_step", "advance", "time_stepper"]
 
 
-def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, set_dt=True, interval=100, enlarge=0.0,
+def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, impact_safety=0.25, set_dt=True, interval=100, enlarge=0.0,
             verlet_dist=None, update_tolerance=0.0, mpi=None, sorted_loop=False):
     """YADE's simulation loop for RBSM blocks, to assign to O.engines (and edit if needed)::
 
@@ -21,7 +21,9 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
 
     *damping* is NewtonIntegrator's non-viscous (Cundall) damping, for quasi-static stages;
     *contact_damping* the viscous damping ratio of the joints; *set_dt*: the time stepper sets O.dt
-    to safety × critical step (True) or refuses a larger O.dt (False).
+    to safety × critical step (True) or refuses a larger O.dt (False). *impact_safety*: the fraction
+    of the critical step set while contacts can open and close (frictional joints and first contacts,
+    undamped stages: RbsmTimeStepper.impactSafety; = safety for the step of earlier versions).
     *update_tolerance*: Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance, 0 for the exact contact
     geometry at every step, e.g. 1e-4 to follow closed joints as material points between exact
     updates (faster, overlap error O(tol²·size); docs/benchmarks.md measures the trade).
@@ -57,6 +59,7 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     contact_damping = number("engines", "contact_damping", contact_damping, 0)
     nIP = count("engines", "nIP", nIP)
     safety = number("engines", "safety", safety, 0, 1, low_open=True)
+    impact_safety = number("engines", "impact_safety", impact_safety, 0, 1, low_open=True)
     interval = count("engines", "interval", interval)
     enlarge = number("engines", "enlarge", enlarge, 0)
     update_tolerance = number("engines", "update_tolerance", update_tolerance, 0, 0.1, high_open=True)
@@ -80,7 +83,8 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     )
     if sorted_loop:
         loop.loopOnSortedInteractions = True
-    stepper = wrapper.RbsmTimeStepper(safetyFactor=safety, setDt=set_dt, interval=interval, label="timeStepper")
+    stepper = wrapper.RbsmTimeStepper(safetyFactor=safety, impactSafety=impact_safety, setDt=set_dt, interval=interval,
+                                      label="timeStepper")
     sync = []
     if mpi:
         from .mpi import sync_engine

@@ -150,6 +150,11 @@ def probe_slipping_surface(steps=500, damping=0.0, check=20, O=None, **kw):
     try:
         omega.switch_off_pyrunners(O)
         omega.newton(O).damping = damping
+        try:  # the first motion at the gravity stage's step (restored with the state): *steps*, the same time
+            ts = omega.engine("timeStepper", O)
+            ts.impactSafety = ts.safetyFactor
+        except LookupError:
+            pass
         seen = set()
         done = 0
         while done < steps:

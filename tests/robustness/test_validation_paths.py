@@ -73,7 +73,11 @@ def test_reshape_in_contact_updates_mass_and_gains_no_energy():
     assert r["revision"] == 1
     assert r["mass"] == pytest.approx(r["mass_expected"], rel=1e-12), r
     assert r["inertia"] == pytest.approx(r["inertia_expected"], rel=1e-12), r
-    assert r["gain"] < 1.0, r  # J; it gained 18 kJ in 1000 steps with the octagon's mass and contact
+    # J; it gained 18 kJ in 1000 steps with the octagon's mass and contact. The measure (kinetic + gravity)
+    # leaves out the springs: the lighter triangle rests 0.2 mm higher, the energy of its relaxed overlap,
+    # m g rise = 2.7 J, shows up as "gain" (measured 2.50 J one step after the reshape at impactSafety 0.25,
+    # -1.16 J at 0.8, where the first, larger step already moved it: the same end state)
+    assert r["gain"] < 1.0 + r["mass"] * 9.81 * abs(r["rise"]), r
     assert r["contacts"] and abs(r["rest_height"] - 0.4619) < 0.01, r
 
 

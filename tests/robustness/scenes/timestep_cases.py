@@ -21,7 +21,10 @@ nu_half       ν = 0.5 − 1e-15 (plane strain): refused by RbsmMat's constructo
 rocking       a w × h block tilted by `angle` degrees, dropped `drop` m on a base (friction angle `phi`,
               engines() defaults, no damping): the largest gain of total energy (kinetic + gravity +
               springs + friction dissipated) between contacts and at the end, as a fraction of the energy it can lose
-              falling flat, and its highest centroid after the first landing."""
+              falling flat, and its highest centroid after the first landing.
+flat_drop     a 1 × 0.5 m block (E = 2e8 Pa, ρ = 2400) dropped flat from `drop` m (default 2) onto a base, undamped, engines()
+              defaults or `safety` / `impact`: the highest rebound of its centroid above its resting height
+              after the first landing, and the steps its first contact lasted."""
 import os, sys, math
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from _common import params, emit, all_finite
@@ -101,12 +104,15 @@ elif case in ("corner_square", "corner_long", "corner_drop"):
     O.engines = engines()
     if case == "corner_drop":
         O.dt = 1e-5
-    dts = []
+    dts, y0, ys = [], b.state.pos[1], []
+    from yade_rbsm import advance
     for k in range(p.get("chunks", 60)):
-        O.run(100, True)
+        for _ in range(10):
+            advance(10)
+            ys.append(b.state.pos[1])
         dts.append(O.dt)
     res.update(dt_max=max(dts), dt_end=O.dt, y=b.state.pos[1], finite=all_finite(O), first=getattr(stepper(), "firstContactDt", None),
-               crit=stepper().criticalDt, time=O.time)
+               crit=stepper().criticalDt, time=O.time, y0=y0, y_min=min(ys), y_max=max(ys))
 elif case == "circle":
     n = 10000
     poly = [(0.5 * math.cos(2 * math.pi * k / n), 0.5 + 0.5 * math.sin(2 * math.pi * k / n)) for k in range(n)]
@@ -200,4 +206,28 @@ elif case == "rocking":
             ymax = max(ymax, b.state.pos[1])
     gain = max(gain, energy() - e0)
     res.update(gain=gain / (m * g * (y0 - h / 2)), ymax=ymax, y0=y0, y=b.state.pos[1], finite=all_finite(O), steps=O.iter)
+elif case == "flat_drop":
+    drop = p.get("drop", 2.0)
+    rock = RbsmMat(young=2e8, poisson=0.2, density=2400, frictionAngle=math.radians(30))
+    O.materials.append(rock)
+    O.bodies[0].material = rock
+    b = O.bodies[O.bodies.append(polygon2d(rect(-0.5, drop, 1, 0.5), rock))]
+    kw = {"safety": p["safety"]} if "safety" in p else {}
+    O.engines = engines(**kw)
+    if "impact" in p:
+        stepper().impactSafety = p["impact"]
+    y_rest = 0.25  # centroid at rest (the overlap under its own weight is 1e-6 m)
+    landed, rebound, contact_steps, flying = False, 0.0, 0, False
+    while O.time < p.get("time", 1.6) and all_finite(O):
+        O.step()
+        touching = any(i.isReal for i in O.interactions)
+        if touching and not flying:
+            landed = True
+            contact_steps += 1
+        if landed and not touching:
+            flying = True
+        if flying:
+            rebound = max(rebound, b.state.pos[1] - y_rest)
+    res.update(rebound=rebound, drop=drop, contact_steps=contact_steps, finite=all_finite(O), steps=O.iter,
+               dt=O.dt, impact=stepper().impactSafety)
 emit(res)
