@@ -117,6 +117,8 @@ def biaxial_test(sigma3, joint_cohesion, joint_tan_phi, young, poisson, spacing=
     joint_tan_phi = number(who, "joint_tan_phi", joint_tan_phi, 0, low_open=True)
     spacing = number(who, "spacing", spacing, 0, low_open=True)
     width_blocks = count(who, "width_blocks", width_blocks)
+    strain_per_step = number(who, "strain_per_step", strain_per_step, 0, 0.01, low_open=True)
+    max_strain = number(who, "max_strain", max_strain, 0, 1, low_open=True)
     if tensile_strength is None:
         tensile_strength = joint_cohesion / joint_tan_phi
     w0 = time.time()
@@ -206,10 +208,15 @@ class Calibration:
                                  "rigid Voronoi blocks interlock, and no joint strength makes the assembly that weak "
                                  "(docs/slope_factor_of_safety.md)" % (tan_phi, weakest[1],
                                                                         math.degrees(math.atan(weakest[1]))))
-            raise ValueError("calibration: no joint strength gives the assembly c = %.5g Pa, tan phi = %.4g (outside "
-                             "the calibrated assemblies: c %.4g..%.4g Pa, tan phi %.4g..%.4g); widen the grid"
-                             % (cohesion, tan_phi, min(p[0] for p in pts) * cs, max(p[0] for p in pts) * cs,
-                                min(p[1] for p in pts), max(p[1] for p in pts)))
+            f = LinearNDInterpolator(pts, vals)
+            lo_c, hi_c = min(p[0] for p in pts), max(p[0] for p in pts)
+            ok = [x for x in (lo_c + (hi_c - lo_c) * k / 200 for k in range(201))
+                  if all(math.isfinite(v) for v in f([(x, tan_phi)]).reshape(-1))]
+            where = (("at tan phi %.4g the calibrated assemblies reach c %.4g..%.4g Pa" % (tan_phi, ok[0] * cs, ok[-1] * cs))
+                     if ok else ("tan phi %.4g is outside the calibrated %.4g..%.4g" % (tan_phi, min(p[1] for p in pts),
+                                                                                   max(p[1] for p in pts))))
+            raise ValueError("calibration: no joint strength gives the assembly c = %.5g Pa, tan phi = %.4g (%s): widen "
+                             "cohesion_factors or joint_friction_angles" % (cohesion, tan_phi, where))
         return float(v[0]), float(v[1])
 
     def report(self):
@@ -222,7 +229,7 @@ class Calibration:
                                                    "misfit")]
         for r in sorted(self.rows, key=lambda r: (r["tan_phi_j"], r["c_j"])):
             lines.append("%10.4f %12.5g | %10.3f %12.5g %8.3f %8.1f%%" % (
-                r["tan_phi_j"], r["c_j"], r["phi_macro"], r["c_macro"], r["c_macro"] / r["c_j"] if r["c_j"] else 1,
+                r["tan_phi_j"], r["c_j"], r["phi_macro"], r["c_macro"], r["c_macro"] / r["c_j"] if r["c_j"] else math.nan,
                 100 * r["misfit"]))
         return "\n".join(lines)
 
@@ -271,6 +278,12 @@ def calibrate(cohesion, friction_angle, young, poisson, stress, spacing=1.0, min
     if len(tan_phi_joint) * len(cohesion_factors) < 3:
         raise ValueError("calibrate: the grid needs at least 3 joint strengths")
     seeds = [int(s) for s in seeds]
+    if not seeds:
+        raise ValueError("calibrate: give at least one tessellation seed")
+    confinements = [number(who, "confinements[%d]" % k, f, 0) for k, f in enumerate(confinements)]
+    if len(set(confinements)) < 2:
+        raise ValueError("calibrate: give at least two different confinements (a Mohr-Coulomb envelope needs two points)")
+    strain_per_step = number(who, "strain_per_step", strain_per_step, 0, 0.01, low_open=True)
     tp = math.tan(friction_angle)
     tensile = cohesion / tp
     params = dict(cohesion=cohesion, friction_angle=friction_angle, young=young, poisson=poisson, stress=stress,
@@ -316,6 +329,11 @@ def calibrate(cohesion, friction_angle, young, poisson, stress, spacing=1.0, min
                 if verbose:
                     print("  left out of the table: tan phi_j %.4f, c_j %.5g Pa: %s" % (tj, cj, e), flush=True)
                 continue
+            if c < 0:  # a curved envelope's negative intercept: no Mohr-Coulomb soil to map to
+                if verbose:
+                    print("  left out of the table: tan phi_j %.4f, c_j %.5g Pa: fitted cohesion %.4g Pa < 0 (phi %.1f deg)"
+                          % (tj, cj, c, math.degrees(phi)), flush=True)
+                continue
             cal.rows.append(dict(tan_phi_j=tj, c_j=cj, phi_macro=math.degrees(phi), c_macro=c, misfit=misfit,
                                  sigma3=s3, sigma1=s1))
     finally:
@@ -323,6 +341,9 @@ def calibrate(cohesion, friction_angle, young, poisson, stress, spacing=1.0, min
             O.loadTmp(mark)
         else:
             O.resetThisScene()
+    if len(cal.rows) < 3:
+        raise ValueError("calibrate: only %d of the joint strengths gave a Mohr-Coulomb envelope (at least 3 are needed "
+                         "to interpolate); not cached" % len(cal.rows))
     if path:
         cal.save(path)
     if verbose:

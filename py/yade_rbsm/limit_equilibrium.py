@@ -847,7 +847,7 @@ def critical_circle(
     xs = _lin(x_range, nx, "x_range")
     ys = _lin(y_range, ny, "y_range")
     best = None
-    tried = valid = 0
+    tried = valid = below = 0
     for level in range(refine + 1):
         for xc in xs:
             for yc in ys:
@@ -861,6 +861,7 @@ def critical_circle(
                     except ValueError:
                         continue
                     if base is not None and _lowest(r) < base - slope.tol:
+                        below += 1
                         continue
                     if not (r.fs > 0 and math.isfinite(r.fs)):
                         continue
@@ -877,5 +878,6 @@ def critical_circle(
             xs = np.linspace(cx - hx, cx + hx, len(xs))
             ys = np.linspace(cy - hy, cy + hy, len(ys))
     if best is None:
-        raise ValueError(f"no valid trial circle in the search space ({tried} tried)")
+        why = f"; {below} of them dip below the firm base y = {base}" if below else ""
+        raise ValueError(f"no valid trial circle in the search space ({tried} tried{why})")
     return SearchResult(meth, best, best.surface, tried, valid, tried - valid)

@@ -70,8 +70,9 @@ class Trial:
 
     def __str__(self):
         loc = (", local failure of %d block(s) %s" % (len(self.local), self.local[:5])) if self.local else ""
-        return ("F = %.4f: %s (%s after %d steps, unbalanced ratio %.2e, max displacement %.3e m, moving mass %.1f %%%s, "
-                "%.1f s wall)" % (self.F, "FAILED" if self.failed else "stable", self.reason, self.steps, self.ratio,
+        ratio = ("unbalanced ratio %.2e" % self.ratio) if math.isfinite(self.ratio) else "unbalanced ratio not reached"
+        return ("F = %.4f: %s (%s after %d steps, %s, max displacement %.3e m, moving mass %.1f %%%s, "
+                "%.1f s wall)" % (self.F, "FAILED" if self.failed else "stable", self.reason, self.steps, ratio,
                                   self.dmax, 100 * self.moving, loc, self.wall))
 
 
@@ -186,7 +187,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
         away = [i for i in ids if d[i] > d_fail]
         moving = sum(mass[i] for i in away) / total
         if away and moving > mass_fraction:
-            failed, reason = True, "runaway"
+            failed, reason, local = True, "runaway", []  # the moving blocks are the mechanism, not local
             break
         local = away
         ratio = unbalanced_ratio(ids=set(ids) - set(away)) if away else unbalanced_ratio()
@@ -229,6 +230,8 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     if soil is not None:
         soil = (number(where, "soil cohesion", soil[0], 0), number(where, "soil friction angle", soil[1], 0,
                                                                     math.pi / 2, low_open=True, high_open=True))
+    if not (ids if ids is not None else _free_ids()):
+        raise ValueError("strength_reduction: no free blocks to monitor (empty scene, or every block fixed)")
     from .scene import time_stepper
     stepper = time_stepper()
     if density_scaling and stepper is None:
@@ -257,6 +260,13 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     pngs = {}
 
     def run(F):
+        if calibration is not None:
+            try:
+                calibration.joint_strength(soil[0] / F, math.tan(soil[1]) / F)
+            except ValueError as e:
+                raise RuntimeError("strength_reduction: trial F = %.4g is outside the calibration (%s); bracket so far: "
+                                   "stable %s, failed %s; trials: %s" % (F, e, lo, hi, "; ".join(str(t) for t in trials))) \
+                    from None
         t = trial(F, ref, mark, png=("%s_F%.4f.png" % (png, F)) if png else None, **kw)
         pngs[F] = t.png
         return t
@@ -265,8 +275,14 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
         F = float(start)
         while lo is None or hi is None:
             if len(trials) >= max_trials:
-                raise RuntimeError("strength_reduction: no bracket after %d trials (%s; reference state's unbalanced-force "
-                                   "ratio %.2e)" % (len(trials), crit, r0))
+                Fs = [t.F for t in trials]
+                side = (("every trial stable, up to F = %.4g: no mechanism found (e.g. a pattern of only horizontal "
+                         "and vertical joints stands as columns whatever the friction; see "
+                         "docs/slope_factor_of_safety.md)" % max(Fs))
+                        if lo is not None else ("every trial failed, down to F = %.4g: the reference state is not "
+                                                "stable at any strength" % min(Fs)))
+                raise RuntimeError("strength_reduction: no bracket after %d trials, %s (%s; reference state's "
+                                   "unbalanced-force ratio %.2e)" % (len(trials), side, crit, r0))
             t = run(F)
             trials.append(t)
             if t.failed:

@@ -6,6 +6,8 @@
 #            slope's failure); the mechanism PNGs
 #   ductile  RbsmMat.ductile reaches the joints and survives O.save / O.load
 #   calibration  a small calibration grid from inside a slope scene (which it leaves as it was)
+#   messages  what a user trying these tools ran into: bad calibrate arguments, strength reduction on an
+#            empty scene and on bricks (no mechanism)
 # Prints RESULT <json>.
 import json, math, os, sys, tempfile
 from yade import O, wrapper
@@ -97,4 +99,31 @@ elif what == "calibration":
         out["phi20"] = "found"
     except ValueError as e:
         out["phi20"] = str(e)
+elif what == "messages":
+    from yade_rbsm.calibration import calibrate
+
+    def err(f):
+        try:
+            f()
+            return "accepted"
+        except (ValueError, RuntimeError) as e:
+            return str(e)
+    args = (c, phi, 100e6, 0.3, 200e3)
+    out["strain0"] = err(lambda: calibrate(*args, strain_per_step=0, cache=False, verbose=False))
+    out["one_confinement"] = err(lambda: calibrate(*args, confinements=(0.1,), cache=False, verbose=False))
+    out["no_seeds"] = err(lambda: calibrate(*args, seeds=(), cache=False, verbose=False))
+    O.resetThisScene()
+    out["empty"] = err(lambda: strength_reduction())
+    O.resetThisScene()
+    mat = wrapper.RbsmMat(young=100e6, poisson=0.3, density=2000, frictionAngle=phi, cohesion=c,
+                          tensileStrength=c / math.tan(phi))
+    O.materials.append(mat)
+    sb = sl.brick_blocks([(0, 0), (4, 0), (7, 5), (10, 5)], 0.0, 1.0, 0.5)
+    sl.build_scene(sb, mat)
+    O.engines = yr.engines(set_dt=True, enlarge=0.01)
+    O.dt = 1e-6
+    sl.bond_and_break(sb)
+    sl.settle(tol=1e-4, max_steps=20000, check=200)
+    out["bricks"] = err(lambda: strength_reduction(start=1.0, grow=3.0, max_trials=3, max_steps=2000, check=200,
+                                                   verbose=False))
 print("RESULT " + json.dumps(out))

@@ -59,3 +59,17 @@ def test_voronoi_assembly_is_stronger_than_its_joints():
     assert all(pm > pj + 15.0 for pj, pm, _ in r["rows"])
     assert r["scene_kept"]
     assert "outside the calibrated" in r["phi20"]
+
+
+def test_what_a_new_user_ran_into():
+    """A new user's trial (session 9): calibrate with strain_per_step=0 looped for ever, one confinement or
+    no seed returned and cached an empty table, strength_reduction on an empty scene said "max() arg is
+    an empty sequence", and on bricks (horizontal and vertical joints only: columns stand whatever the
+    friction) "no bracket" without saying that every trial was stable."""
+    r = _run("messages")
+    print(r)
+    assert "strain_per_step" in r["strain0"]
+    assert "two different confinements" in r["one_confinement"]
+    assert "seed" in r["no_seeds"]
+    assert "no free blocks" in r["empty"]
+    assert "every trial stable" in r["bricks"] and "no mechanism" in r["bricks"]
