@@ -113,7 +113,7 @@ bool RbsmTimeStepper::jointAsDynContact(const Interaction& I, int body1, int bod
 	c.tangent = g->tangent();
 	c.kn      = p->kn;
 	c.ks      = p->ks;
-	if (mayImpact(I, *p)) { // its ω scaled so that safetyFactor gives impactSafety's step
+	if (mayImpact(*p)) { // its ω scaled so that safetyFactor gives impactSafety's step
 		const Real s = (safetyFactor / impactSafety) * (safetyFactor / impactSafety);
 		c.kn *= s, c.ks *= s;
 	}
@@ -147,7 +147,7 @@ bool RbsmTimeStepper::jointAsDynContact(const Interaction& I, int body1, int bod
 // Accuracy, not stability: only the step the stepper sets (setDt) takes it; a checked O.dt is not refused for it.
 bool RbsmTimeStepper::impactsMatter() const { return setDt && impactSafety < safetyFactor && !(newtonDamping > 0); }
 
-bool RbsmTimeStepper::mayImpact(const Interaction&, const RbsmPhys& p) const { return impactsMatter() && p.nIntact() == 0; }
+bool RbsmTimeStepper::mayImpact(const RbsmPhys& p) const { return impactsMatter() && p.nIntact() == 0; }
 
 // Joint dashpots (Law2's dampingRatio) lower the limit of the central-difference scheme, whose
 // velocity is half a step behind: dt ≤ (2/ω)(√(1+ξ²) − ξ) for a mode of frequency ω and damping

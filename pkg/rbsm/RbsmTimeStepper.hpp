@@ -98,7 +98,7 @@ private:
 	template <class Keep> const std::vector<const Interaction*>& jointsByIds(Keep keep);
 	Real firstContactEstimate() const;
 	bool jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
-	bool mayImpact(const Interaction& I, const RbsmPhys& p) const;
+	bool mayImpact(const RbsmPhys& p) const;
 	bool impactsMatter() const;
 	Real blockDt(size_t id) const; // damped step of body id's rows (rowBounds)
 	bool ownedHere(const Body& b) const; // the block is integrated on this rank (always true outside yade.mpy's workers)

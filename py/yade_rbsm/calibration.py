@@ -199,7 +199,8 @@ class Calibration:
         cs = self.params["cohesion"]
         pts = [(r["c_macro"] / cs, math.tan(math.radians(r["phi_macro"]))) for r in self.rows]
         vals = [(r["c_j"], r["tan_phi_j"]) for r in self.rows]
-        v = [float(x) for x in LinearNDInterpolator(pts, vals)([(cohesion / cs, tan_phi)]).reshape(-1)]
+        f = LinearNDInterpolator(pts, vals)
+        v = [float(x) for x in f([(cohesion / cs, tan_phi)]).reshape(-1)]
         if not all(math.isfinite(x) for x in v):
             weakest = min(pts, key=lambda p: p[1])
             if tan_phi < weakest[1]:
@@ -208,10 +209,9 @@ class Calibration:
                                  "rigid Voronoi blocks interlock, and no joint strength makes the assembly that weak "
                                  "(docs/slope_factor_of_safety.md)" % (tan_phi, weakest[1],
                                                                         math.degrees(math.atan(weakest[1]))))
-            f = LinearNDInterpolator(pts, vals)
             lo_c, hi_c = min(p[0] for p in pts), max(p[0] for p in pts)
             ok = [x for x in (lo_c + (hi_c - lo_c) * k / 200 for k in range(201))
-                  if all(math.isfinite(v) for v in f([(x, tan_phi)]).reshape(-1))]
+                  if all(math.isfinite(y) for y in f([(x, tan_phi)]).reshape(-1))]
             where = (("at tan phi %.4g the calibrated assemblies reach c %.4g..%.4g Pa" % (tan_phi, ok[0] * cs, ok[-1] * cs))
                      if ok else ("tan phi %.4g is outside the calibrated %.4g..%.4g" % (tan_phi, min(p[1] for p in pts),
                                                                                    max(p[1] for p in pts))))
