@@ -20,10 +20,7 @@ YADE_PLUGIN((Ig2_Polygon2D_Polygon2D_RbsmGeom));
 
 void Ig2_Polygon2D_Polygon2D_RbsmGeom::postLoad(Ig2_Polygon2D_Polygon2D_RbsmGeom&)
 {
-	if (nIP < 1 || nIP > 8) throw std::invalid_argument("Ig2_Polygon2D_Polygon2D_RbsmGeom.nIP: must be 1..8 (got " + std::to_string(nIP) + ")");
-	if (!(std::isfinite(interactionDistance) && interactionDistance >= 0))
-		throw std::invalid_argument(
-		        "Ig2_Polygon2D_Polygon2D_RbsmGeom.interactionDistance: must be a finite distance >= 0 (got " + std::to_string(interactionDistance) + ")");
+	rbsm_report::checkContactAttributes("Ig2_Polygon2D_Polygon2D_RbsmGeom", nIP, interactionDistance);
 	if (!(std::isfinite(hysteresis) && hysteresis >= 0))
 		throw std::invalid_argument("Ig2_Polygon2D_Polygon2D_RbsmGeom.hysteresis: must be a finite number >= 0 (got " + std::to_string(hysteresis) + ")");
 	if (!(std::isfinite(updateTolerance) && updateTolerance >= 0 && updateTolerance < 0.1))
@@ -58,14 +55,7 @@ namespace {
 	}
 
 
-	// Periodic cells are not supported: reported (StepReport.hpp) and the run stopped at the end of
-	// this step, so that no step runs with the contacts across the cell's boundary missing.
-	std::atomic<int> periodicReports { 0 }, materialReports { 0 };
-	void             reportPeriodic(const Interaction& I, Scene& scene)
-	{
-		rbsm_report::stopForPair(periodicReports, scene, "Ig2_Polygon2D_Polygon2D_RbsmGeom", I.getId1(), I.getId2(),
-		                         "meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported");
-	}
+	std::atomic<int> periodicReports { 0 }, materialReports { 0 }; // (StepReport.hpp)
 
 	// Overlaps deeper than this fraction of the smaller block are outside what the small-strain
 	// joint springs represent: reported (a few times per run), like UDEC's "contact overlap too great".
@@ -207,10 +197,7 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
         const bool&              force,
         const shared_ptr<Interaction>& I)
 {
-	if (shift2 != Vector3r::Zero()) { // a contact across a periodic cell's boundary
-		reportPeriodic(*I, *scene);
-		return false;
-	}
+	if (rbsm_report::acrossPeriodicCell(periodicReports, *scene, "Ig2_Polygon2D_Polygon2D_RbsmGeom", *I, shift2)) return false;
 	const Polygon2D& A = static_cast<const Polygon2D&>(*s1);
 	const Polygon2D& B = static_cast<const Polygon2D&>(*s2);
 	if (A.vertices.empty() || B.vertices.empty()) return false; // reported by Bo1_Polygon2D_Aabb

@@ -24,11 +24,7 @@ bool Ig2_Polygon2D_Sphere_ScGeom::go(
         const bool&              force,
         const shared_ptr<Interaction>& I)
 {
-	if (shift2 != Vector3r::Zero()) {
-		rbsm_report::stopForPair(periodicReports, *scene, "Ig2_Polygon2D_Sphere_ScGeom", I->getId1(), I->getId2(),
-		                         "meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported");
-		return false;
-	}
+	if (rbsm_report::acrossPeriodicCell(periodicReports, *scene, "Ig2_Polygon2D_Sphere_ScGeom", *I, shift2)) return false;
 	const Polygon2D& block = static_cast<const Polygon2D&>(*s1);
 	const Real       r     = static_cast<const Sphere&>(*s2).radius;
 	if (block.vertices.empty() || block.edgeNormals.size() != block.vertices.size()) return false; // reported by Bo1_Polygon2D_Aabb

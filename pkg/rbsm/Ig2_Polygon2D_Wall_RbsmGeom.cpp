@@ -13,9 +13,7 @@ YADE_PLUGIN((Ig2_Polygon2D_Wall_RbsmGeom));
 
 void Ig2_Polygon2D_Wall_RbsmGeom::postLoad(Ig2_Polygon2D_Wall_RbsmGeom&)
 {
-	if (nIP < 1 || nIP > 8) throw std::invalid_argument("Ig2_Polygon2D_Wall_RbsmGeom.nIP: must be 1..8 (got " + std::to_string(nIP) + ")");
-	if (!(std::isfinite(interactionDistance) && interactionDistance >= 0))
-		throw std::invalid_argument("Ig2_Polygon2D_Wall_RbsmGeom.interactionDistance: must be a finite distance >= 0 (got " + std::to_string(interactionDistance) + ")");
+	rbsm_report::checkContactAttributes("Ig2_Polygon2D_Wall_RbsmGeom", nIP, interactionDistance);
 }
 
 namespace {
@@ -31,11 +29,7 @@ bool Ig2_Polygon2D_Wall_RbsmGeom::go(
         const bool&              /*force*/,
         const shared_ptr<Interaction>& I)
 {
-	if (shift2 != Vector3r::Zero()) {
-		rbsm_report::stopForPair(periodicReports, *scene, "Ig2_Polygon2D_Wall_RbsmGeom", I->getId1(), I->getId2(),
-		                         "meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported");
-		return false;
-	}
+	if (rbsm_report::acrossPeriodicCell(periodicReports, *scene, "Ig2_Polygon2D_Wall_RbsmGeom", *I, shift2)) return false;
 	const Polygon2D& block = static_cast<const Polygon2D&>(*s1);
 	if (block.vertices.empty() || !(block.circumradius > 0)) return false; // reported by Bo1_Polygon2D_Aabb
 	const Wall& w = static_cast<const Wall&>(*s2);

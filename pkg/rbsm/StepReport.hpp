@@ -2,12 +2,15 @@
 // cannot leave (std::terminate ends YADE), so they report on stderr instead, and stop the run after
 // the step where going on would compute without part of the model.
 #pragma once
+#include <core/Interaction.hpp>
 #include <core/Scene.hpp>
 
 #include <atomic>
+#include <cmath>
 #include <iostream>
 #include <mutex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace yade {
@@ -55,6 +58,26 @@ namespace rbsm_report {
 			    << (last ? "; further such errors are not shown" : "");
 			return msg.str();
 		});
+	}
+
+	/// Periodic cells are not supported by the block functors: a pair met across the cell's boundary
+	/// (shift2 ≠ 0) is reported and the run stopped after this step, so that no step runs with the
+	/// contacts across it missing. True if refused.
+	inline bool acrossPeriodicCell(std::atomic<int>& count, Scene& scene, const char* who, const Interaction& I, const Vector3r& shift2)
+	{
+		if (shift2 == Vector3r::Zero()) return false;
+		stopForPair(count, scene, who, I.getId1(), I.getId2(), "meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported");
+		return true;
+	}
+
+	/// The attributes every contact functor of blocks has, checked when set (postLoad; ValueError in
+	/// Python, before any step): nIP in 1..8, interactionDistance finite and >= 0.
+	inline void checkContactAttributes(const char* who, int nIP, Real interactionDistance)
+	{
+		if (nIP < 1 || nIP > 8) throw std::invalid_argument(std::string(who) + ".nIP: must be 1..8 (got " + std::to_string(nIP) + ")");
+		if (!(std::isfinite(interactionDistance) && interactionDistance >= 0))
+			throw std::invalid_argument(std::string(who) + ".interactionDistance: must be a finite distance >= 0 (got " + std::to_string(interactionDistance)
+			                            + ")");
 	}
 } // namespace rbsm_report
 } // namespace yade
