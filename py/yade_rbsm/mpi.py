@@ -252,32 +252,29 @@ def counted_here(I):
     return b1 is not None and b2 is not None and max(b1.subdomain, b2.subdomain) == O._sceneObj.subdomain
 
 
-def allreduce_min(values):
-    """Collective when the scene is split: the element-wise minimum over the ranks (the list itself
-    otherwise)."""
-    mp = _mpy()
+def _allreduce(mp, values, op):
+    """The element-wise MPI reduction *op* of a list of floats over the ranks of *mp* (the list itself
+    without one)."""
     if mp is None:
         return list(values)
     import numpy as np
 
     local = np.array(values, dtype=float)
     out = np.empty_like(local)
-    mp.comm.Allreduce(local, out, op=mp.MPI.MIN)
+    mp.comm.Allreduce(local, out, op=op(mp))
     return [float(v) for v in out]
+
+
+def allreduce_min(values):
+    """Collective when the scene is split: the element-wise minimum over the ranks (the list itself
+    otherwise)."""
+    return _allreduce(_mpy(), values, lambda mp: mp.MPI.MIN)
 
 
 def allreduce_sum(values):
     """Collective when distributed: the element-wise sum over the ranks of a list of floats
     (the list itself serially)."""
-    mp = distributed()
-    if mp is None:
-        return list(values)
-    import numpy as np
-
-    local = np.array(values, dtype=float)
-    out = np.empty_like(local)
-    mp.comm.Allreduce(local, out, op=mp.MPI.SUM)
-    return [float(v) for v in out]
+    return _allreduce(distributed(), values, lambda mp: mp.MPI.SUM)
 
 
 def joints_across():
