@@ -1,5 +1,6 @@
 #include <pkg/rbsm/BlockStateCheck.hpp>
 #include <pkg/rbsm/Ip2_RbsmMat_RbsmMat_RbsmPhys.hpp>
+#include <pkg/rbsm/MemoryOrder.hpp>
 #include <pkg/rbsm/Polygon2D.hpp>
 #include <pkg/rbsm/RbsmGeom.hpp>
 #include <pkg/rbsm/RbsmMat.hpp>
@@ -508,6 +509,9 @@ void RbsmTimeStepper::action()
 		throw std::runtime_error(message + " [deferErrors is set but no yade_rbsm.mpi sync engine follows RbsmTimeStepper: use yade_rbsm.engines(mpi=True)]");
 	}
 	stepDt = std::numeric_limits<Real>::infinity();
+	// once per engine object, i.e. after O.load: the stepper is in every RBSM engine list, old saved
+	// scenes included (MemoryOrder.hpp says why; the loop has run, so nothing holds an interaction)
+	if (!memoryOrdered) orderInteractionsInMemory(*scene), memoryOrdered = true;
 	// in every step: the one serial place of an RBSM step that sees a VTKRecorder added to O.engines
 	// (first: also in a step that a bad block below ends early, since the recorder would still run)
 	vtkRecorderGuard.check(*scene);

@@ -111,6 +111,8 @@ private:
 	std::vector<rbsm::DynContact> dynContacts;
 	std::vector<Real>             inradius; // per body id, from the last full estimate
 	long                          jointsSeen = -1;
+	// not saved: a loaded scene (a new engine object) gets its interactions laid out in loop order once
+	bool memoryOrdered = false;
 	struct BoundPose {
 		long iter = -1; // Bound::lastUpdateIter when c, s were taken
 		Real c = 1, s = 0;

@@ -34,6 +34,7 @@ public:
 	long              iterBorn;
 
 	Interaction() = delete;
+	Interaction(Body::id_t newId1, Body::id_t newId2); // exported by libyade.so
 	~Interaction() override;
 	boost::python::dict pyDictCustom() const override;
 	YADE_DECLARE_SERIALIZABLE_OVERRIDES

@@ -28,6 +28,8 @@ public:
 	size_t         size() const { return currSize; }
 	const shared_ptr<Interaction>& find(Body::id_t id1, Body::id_t id2); // exported by libyade.so
 	void                           requestErase(const shared_ptr<Interaction>& I);
+	bool                           insert(const shared_ptr<Interaction>& I); // exported by libyade.so
+	void                           clear();                                  // exported by libyade.so
 
 	InteractionContainer() = delete;
 	~InteractionContainer() override;

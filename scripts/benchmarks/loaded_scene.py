@@ -1,0 +1,91 @@
+# -*- coding: utf-8 -*-
+"""A scene loaded with O.load against the same scene freshly built (issue 22), ms per step at -j<--j>.
+
+    build/yade-rbsm -j1 -n -x scripts/benchmarks/loaded_scene.py [--n 100] [--turns 3] [--j 1]
+
+The parent builds an n x n running-bond wall (n² blocks), runs WARM steps and saves it; then, in turns,
+children continue the scene for TIMED steps: "fresh" rebuilds the wall in its process and runs the WARM steps
+itself, "loaded" calls O.load on the saved file. Both start the timed steps from the same state. Each child
+prints the least ms/step of CHUNKS chunks (other processes only ever add time). Prints a table.
+"""
+import os
+import subprocess
+import sys
+import time
+
+from yade import O, wrapper
+
+import yade_rbsm
+from yade_rbsm import polygon2d, advance
+from yade_rbsm.scene import engines as rbsm_engines
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(yade_rbsm.__file__))))
+LAUNCHER = os.path.join(ROOT, "build", "yade-rbsm")
+SCRIPT = os.path.join(ROOT, "scripts", "benchmarks", "loaded_scene.py")
+BW, BH = 0.2, 0.1
+WARM, TIMED, CHUNKS = 300, 40, 5
+
+
+def arg(name, default):
+    return type(default)(sys.argv[sys.argv.index(name) + 1]) if name in sys.argv else default
+
+
+def build_wall(n):
+    O.resetThisScene()
+    mat = wrapper.RbsmMat(young=1e9, poisson=0.2, frictionAngle=0.6, cohesion=0, tensileStrength=0, density=2000)
+    O.materials.append(mat)
+    O.bodies.append(polygon2d([(-BW, -BH), ((n + 1) * BW, -BH), ((n + 1) * BW, 0), (-BW, 0)], mat, fixed=True))
+    for j in range(n):
+        y0, y1 = j * BH, (j + 1) * BH
+        xs = [(i * BW, (i + 1) * BW) for i in range(n)] if j % 2 == 0 else \
+            [(0.0, 0.5 * BW)] + [((i + 0.5) * BW, (i + 1.5) * BW) for i in range(n - 1)] + [((n - 0.5) * BW, n * BW)]
+        for xa, xb in xs:
+            O.bodies.append(polygon2d([(xa, y0), (xb, y0), (xb, y1), (xa, y1)], mat))
+    O.engines = rbsm_engines(gravity=(0, -9.81, 0), damping=0.2, safety=0.8)
+    O.dt = 1e-6
+
+
+def timed():
+    best = float("inf")
+    for _ in range(CHUNKS):
+        t0 = time.perf_counter()
+        advance(TIMED)
+        best = min(best, (time.perf_counter() - t0) / TIMED)
+    return best * 1e3
+
+
+def child(kind, n, path):
+    if kind == "fresh":
+        build_wall(n)
+        advance(WARM)
+    else:
+        O.load(path)
+    print("LOADED_SCENE %s %d %.3f contacts %d iter %d" % (kind, len(O.bodies), timed(), O.interactions.countReal(),
+                                                          O.iter), flush=True)
+
+
+def main():
+    n, turns = arg("--n", 100), arg("--turns", 3)
+    path = arg("--file", "/tmp/rbsm_loaded_scene_%d.yade.gz" % n)
+    build_wall(n)
+    advance(WARM)
+    O.save(path)
+    threads = str(arg("--j", 1))
+    rows = {"fresh": [], "loaded": []}
+    for _ in range(turns):
+        for kind in ("fresh", "loaded"):
+            cmd = [LAUNCHER, "-j" + threads, "-n", "-x", SCRIPT, "--child", kind, "--n", str(n), "--file", path]
+            out = subprocess.run(cmd, capture_output=True, text=True).stdout
+            line = [l for l in out.splitlines() if l.startswith("LOADED_SCENE")]
+            if not line:
+                sys.exit("child %s printed no result:\n%s" % (kind, out[-2000:]))
+            rows[kind].append(float(line[0].split()[3]))
+            print(line[0], "load %.2f" % os.getloadavg()[0], flush=True)
+    f, l = min(rows["fresh"]), min(rows["loaded"])
+    print("| %d blocks, -j%s | fresh %.2f ms/step | loaded %.2f ms/step | loaded/fresh %.3f |" % (n * n, threads, f, l, l / f))
+
+
+if "--child" in sys.argv:
+    child(sys.argv[sys.argv.index("--child") + 1], arg("--n", 100), arg("--file", ""))
+else:
+    main()
