@@ -93,7 +93,8 @@ ap.add_argument("--sr-tol", type=float, default=1e-3, help="unbalanced-force rat
 ap.add_argument("--sr-steps", type=int, default=4000, help="max steps of a strength-reduction trial")
 ap.add_argument("--sr-dfail", type=float, default=0.1, help="runaway displacement of a trial [m]")
 ap.add_argument("--vtk-every", type=float, default=0.1, help="VTK snapshot period in the dynamic stage [s]")
-ap.add_argument("--plot-every", type=int, default=50, help="yade.plot recording period [steps]")
+ap.add_argument("--plot-every", type=int, default=150,
+                help="yade.plot recording period [steps] (150: every 11 ms of the dynamic stage, as 50 did before the impact step of RbsmTimeStepper.impactSafety)")
 ap.add_argument("--progress", type=float, default=10.0, help="progress line period [s of wall time]")
 ap.add_argument("--no-search", action="store_true", help="skip the critical-circle search")
 ap.add_argument("--mpi", type=int, nargs="?", const=0, default=None, metavar="N",
