@@ -1,12 +1,14 @@
-// MemoryOrder: the interactions of a scene laid out in memory in the order InteractionLoop visits them.
+// MemoryOrder: the interactions of a scene in the order of their bodies' ids, in the container and in memory.
 #pragma once
 
 namespace yade {
 class Scene;
 
-/// Re-creates every Interaction object in the container's order (geometry and physics kept) and
-/// inserts them again, so that consecutive contacts of the loop sit next to each other in memory.
-/// O.load allocates them interleaved with the bodies, in reverse: the same work then runs 1.6× slower
-/// (docs/benchmarks.md). Returns the number moved; 0 under yade.mpy (subdomains), where it is skipped.
+/// Sorts the interactions by (id1, id2) and re-creates each Interaction, with copies of its RBSM
+/// geometry and physics next to it, so that the loop walks the bodies in id order and streams
+/// through memory (the collider makes them in sweep order, O.load interleaved with the bodies:
+/// 1.3-1.7x slower per contact-step at 10^4-10^5 blocks, docs/benchmarks.md). An object that
+/// something else also holds (a Python variable, YADE's sorted loop) keeps its place, so that no
+/// reference goes stale. Skipped under yade.mpy (subdomains). Returns the number of interactions.
 long orderInteractionsInMemory(Scene& scene);
 } // namespace yade

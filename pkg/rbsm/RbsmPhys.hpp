@@ -5,6 +5,7 @@
 #include <pkg/rbsm/kernel/IntegrationRule.hpp>
 #include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <stdexcept>
@@ -23,12 +24,37 @@ public:
 	/// A joint's points live in the joint itself up to kInlinePoints (Ig2's default nIP = 2: one block of
 	/// memory with the joint, no other), and all in one heap block of their own beyond (nIP 3..8), so a
 	/// scene pays only for the points it asked for.
-	static constexpr int             kInlinePoints = 2;
+	static constexpr int kInlinePoints = 2;
+	/// The points beyond kInlinePoints: one heap block, copied with the joint (MemoryOrder.cpp copies
+	/// joints to lay them out in loop order).
+	struct MorePoints {
+		std::unique_ptr<Point[]> data;
+		int                      size = 0;
+		MorePoints()                  = default;
+		MorePoints(const MorePoints& o)
+		        : data(o.size ? new Point[o.size] : nullptr)
+		        , size(o.size)
+		{
+			std::copy_n(o.data.get(), size, data.get());
+		}
+		MorePoints& operator=(const MorePoints& o)
+		{
+			MorePoints c(o);
+			std::swap(data, c.data);
+			std::swap(size, c.size);
+			return *this;
+		}
+		void reset(int n)
+		{
+			data.reset(n ? new Point[n] : nullptr);
+			size = n;
+		}
+	};
 	std::array<Point, kInlinePoints> inlinePoints {};
-	std::unique_ptr<Point[]>         morePoints; ///< all the points when there are more than kInlinePoints
+	MorePoints                       morePoints; ///< all the points when there are more than kInlinePoints
 	int                              nPoints = 0; ///< how many points (the geometry's nIP)
-	Point*                           pointData() { return morePoints ? morePoints.get() : inlinePoints.data(); }
-	const Point*                     pointData() const { return morePoints ? morePoints.get() : inlinePoints.data(); }
+	Point*                           pointData() { return morePoints.data ? morePoints.data.get() : inlinePoints.data(); }
+	const Point*                     pointData() const { return morePoints.data ? morePoints.data.get() : inlinePoints.data(); }
 	Point&                           point(int k) { return pointData()[k]; }
 	const Point&                     point(int k) const { return pointData()[k]; }
 
@@ -38,7 +64,7 @@ public:
 		if (n < 0 || n > rbsm::kMaxIntegrationPoints) throw std::invalid_argument("RbsmPhys: 0..8 integration points (got " + std::to_string(n) + ")");
 		nPoints = n;
 		inlinePoints.fill(Point {});
-		morePoints.reset(n > kInlinePoints ? new Point[n] : nullptr);
+		morePoints.reset(n > kInlinePoints ? n : 0);
 		for (int k = 0; k < n; k++)
 			point(k).joint.intact = intact;
 	}

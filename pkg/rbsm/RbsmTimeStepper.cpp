@@ -509,9 +509,6 @@ void RbsmTimeStepper::action()
 		throw std::runtime_error(message + " [deferErrors is set but no yade_rbsm.mpi sync engine follows RbsmTimeStepper: use yade_rbsm.engines(mpi=True)]");
 	}
 	stepDt = std::numeric_limits<Real>::infinity();
-	// once per engine object, i.e. after O.load: the stepper is in every RBSM engine list, old saved
-	// scenes included (MemoryOrder.hpp says why; the loop has run, so nothing holds an interaction)
-	if (!memoryOrdered) orderInteractionsInMemory(*scene), memoryOrdered = true;
 	// in every step: the one serial place of an RBSM step that sees a VTKRecorder added to O.engines
 	// (first: also in a step that a bad block below ends early, since the recorder would still run)
 	vtkRecorderGuard.check(*scene);
@@ -539,7 +536,15 @@ void RbsmTimeStepper::action()
 	const long made = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
 	if (densityScaling != massScaled) lastCheck = -1, massScaled = densityScaling; // switched: estimate now
 	if (!densityScaling) massScale.clear();
-	if (lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval) fullCheck();
+	const bool due = lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval;
+	// once per engine object (first step, or after O.load: the stepper is in every RBSM engine list,
+	// old saved scenes too); not again: the objects freed by one sort would hand the next one its
+	// memory in reverse (malloc reuses freed blocks last-in first-out)
+	if (orderInteractions && orderedAt < 0) {
+		orderInteractionsInMemory(*scene);
+		orderedAt = scene->iter;
+	}
+	if (due) fullCheck();
 	else if (made != jointsSeen) densityScaling ? fullCheck() : addJointsMadeThisStep(); // scales need the full rows
 	jointsSeen          = made;
 	keepBoundsAhead();

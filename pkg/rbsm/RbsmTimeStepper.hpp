@@ -76,6 +76,8 @@ public:
 		((bool, deferErrors, false, , "Distributed runs (set by yade_rbsm.engines(mpi=True)): a refused step is not thrown here but kept in :yref:`error<RbsmTimeStepper.error>` (O.dt untouched), and yade_rbsm.mpi's sync engine, which must follow this one, raises it on every rank before NewtonIntegrator. An error still kept when this engine runs again (no sync engine took it) is thrown then."))
 		((std::string, error, "", Attr::noSave, "The refusal kept by :yref:`deferErrors<RbsmTimeStepper.deferErrors>` at this step (empty: none); the sync engine reads and clears it."))
 		((Real, stepDt, std::numeric_limits<Real>::infinity(), (Attr::readonly | Attr::noSave), "The step chosen at the last run [s]: min(stableDt, maxDt, the travel limit of maxStepMotion); what setDt sets (inf: no block of this rank bounds it). Under yade.mpy the sync engine sets O.dt to its minimum over the ranks."))
+		((bool, orderInteractions, true, , "Sort the interactions by body ids, in the container and in memory (MemoryOrder.hpp), at the first step of this engine, so also after O.load. The collider makes them in sweep order and O.load interleaves them with the bodies, which made a contact-step 1.3-1.7x slower at 10^4-10^5 blocks (docs/benchmarks.md). An interaction held elsewhere (a Python variable) keeps its object. False: YADE's order, as before; results differ by the order of summation only."))
+		((long, orderedAt, -1, (Attr::readonly | Attr::noSave), "Step at which :yref:`orderInteractions<RbsmTimeStepper.orderInteractions>` last sorted the interactions (-1: not yet by this engine object)."))
 		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bound ω² of its rows, the dashpot Σ c·A and the softer spring Σ k·A of its joints since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run).")),
 		/*ctor*/,
 		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the present joints [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
@@ -111,8 +113,6 @@ private:
 	std::vector<rbsm::DynContact> dynContacts;
 	std::vector<Real>             inradius; // per body id, from the last full estimate
 	long                          jointsSeen = -1;
-	// not saved: a loaded scene (a new engine object) gets its interactions laid out in loop order once
-	bool memoryOrdered = false;
 	struct BoundPose {
 		long iter = -1; // Bound::lastUpdateIter when c, s were taken
 		Real c = 1, s = 0;

@@ -1,12 +1,13 @@
 # -*- coding: utf-8 -*-
 """A scene loaded with O.load against the same scene freshly built (issue 22), ms per step at -j<--j>.
 
-    build/yade-rbsm -j1 -n -x scripts/benchmarks/loaded_scene.py [--n 100] [--turns 3] [--j 1]
+    build/yade-rbsm -j1 -n -x scripts/benchmarks/loaded_scene.py [--n 100] [--turns 3] [--j 1] [--no-order]
 
 The parent builds an n x n running-bond wall (n² blocks), runs WARM steps and saves it; then, in turns,
 children continue the scene for TIMED steps: "fresh" rebuilds the wall in its process and runs the WARM steps
 itself, "loaded" calls O.load on the saved file. Both start the timed steps from the same state. Each child
-prints the least ms/step of CHUNKS chunks (other processes only ever add time). Prints a table.
+prints the least ms/step of CHUNKS chunks (other processes only ever add time). Prints a table. --no-order:
+RbsmTimeStepper.orderInteractions off in both (the interactions in YADE's order, as before it existed).
 """
 import os
 import subprocess
@@ -56,12 +57,21 @@ def timed():
     return (sum(each) / len(each) if "--mean" in sys.argv else min(each)) * 1e3
 
 
+def order_option():
+    """--no-order: RbsmTimeStepper.orderInteractions off (YADE's order of the interactions, as before)."""
+    for e in O.engines:
+        if type(e).__name__ == "RbsmTimeStepper":
+            e.orderInteractions = "--no-order" not in sys.argv
+
+
 def child(kind, n, path):
     if kind == "fresh":
         build_wall(n)
+        order_option()
         advance(WARM)
     else:
         O.load(path)
+        order_option()
     print("LOADED_SCENE %s %d %.3f contacts %d iter %d" % (kind, len(O.bodies), timed(), O.interactions.countReal(),
                                                           O.iter), flush=True)
 
@@ -77,6 +87,7 @@ def main():
     for _ in range(turns):
         for kind in ("fresh", "loaded"):
             cmd = [LAUNCHER, "-j" + threads, "-n", "-x", SCRIPT, "--child", kind, "--n", str(n), "--file", path]
+            cmd += [a for a in ("--no-order", "--mean") if a in sys.argv]
             out = subprocess.run(cmd, capture_output=True, text=True).stdout
             line = [l for l in out.splitlines() if l.startswith("LOADED_SCENE")]
             if not line:
