@@ -69,8 +69,11 @@ long orderInteractionsInMemory(Scene& scene)
 	// re-initialisation of the collider at the next step) is put back
 	const bool dirty = intrs.dirty;
 	intrs.clear(); // also the bodies' maps (their nodes are made anew, in order, by insert)
-	for (const auto& J : moved)
+	for (const auto& J : moved) {
+		const long born = J->iterBorn; // insert() sets it to this step
 		intrs.insert(J);
+		J->iterBorn = born;
+	}
 	intrs.dirty = dirty;
 	return static_cast<long>(moved.size());
 }

@@ -56,8 +56,12 @@ if MODE == "build":
     collider_order = layout()
     O.save(PATH)
     stepper().orderInteractions = True
-    advance(100)
-    report(state=state(), iter=O.iter, collider_order=collider_order)
+    born0 = sorted(I.iterBorn for I in O.interactions if I.isReal)
+    advance(1)
+    born1 = sorted(I.iterBorn for I in O.interactions if I.isReal)
+    advance(99)
+    report(state=state(), iter=O.iter, collider_order=collider_order, born_kept=born1[:100] == born0[:100],
+           sorted_at=stepper().orderedAt)
 else:
     O.load(PATH)
     st = stepper()
@@ -105,6 +109,7 @@ def test_loaded_scene_in_id_order(jobs, sorted_loop, tmp_path):
     assert moved["held_kept"], "an interaction held in Python was replaced: that reference is stale"
     assert cont["held_live"], "the held interaction no longer shows the joint's force"
     assert cont["iter"] == full["iter"] == 300
+    assert full["sorted_at"] == 200 and full["born_kept"], "sorting changed when the interactions were made"
     if sorted_loop and jobs == 1:
         assert cont["state"] == full["state"], "the continued run differs from the uninterrupted one"
 
