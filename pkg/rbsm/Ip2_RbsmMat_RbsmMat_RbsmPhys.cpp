@@ -31,6 +31,13 @@ namespace {
 void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shared_ptr<Material>& b2, const shared_ptr<Interaction>& I)
 {
 	if (I->phys) return; // properties are set once, when the joint forms
+	makePhys(b1, b2, I);
+}
+
+// (Out of line: InteractionLoop calls go for every contact at every step, and the early return above
+// then does not pay for the saved registers and stack frame of this body.)
+[[gnu::noinline]] void Ip2_RbsmMat_RbsmMat_RbsmPhys::makePhys(const shared_ptr<Material>& b1, const shared_ptr<Material>& b2, const shared_ptr<Interaction>& I)
+{
 	jointsMade.fetch_add(1, std::memory_order_relaxed);
 	const auto* g = dynamic_cast<const RbsmGeom*>(I->geom.get());
 	if (!g) {

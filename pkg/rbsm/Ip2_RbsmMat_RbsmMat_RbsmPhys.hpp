@@ -35,6 +35,10 @@ public:
 	FUNCTOR2D(RbsmMat, RbsmMat);
 	//! Joints made so far (any scene): RbsmTimeStepper looks for new joints only when it has grown.
 	static inline std::atomic<long> jointsMade { 0 };
+
+private:
+	//! The joint's properties (go, once per contact: when it has none yet).
+	void makePhys(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I);
 };
 REGISTER_SERIALIZABLE(Ip2_RbsmMat_RbsmMat_RbsmPhys);
 

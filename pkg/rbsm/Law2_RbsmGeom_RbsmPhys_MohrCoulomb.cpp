@@ -73,8 +73,8 @@ namespace {
 	};
 
 	// Point k of the rule: the law at the point (rbsm::updateJointPoint) and the viscous damping, added
-	// to the sums.
-	void addPoint(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int k, JointSums& sum)
+	// to the sums. (Inlined early, so that the sums can stay in registers.)
+	[[gnu::always_inline]] inline void addPoint(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int k, JointSums& sum)
 	{
 		RbsmPhys::Point* const       pts = p.pointData();
 		const Real                   s   = g.rule->s[k];
@@ -153,9 +153,11 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	scene->forces.addTorque(I->getId2(), Vector3r(0, 0, torque2));
 
 	if (scene->trackEnergy) {
-		scene->energy->add(sum.elastic, "elastPotential", elastPotentialIx, /*reset every step*/ true);
-		if (sum.dissipated != 0) scene->energy->add(sum.dissipated, "plastDissip", plastDissipIx, /*cumulative*/ false);
-		if (sum.viscous != 0) scene->energy->add(sum.viscous, "viscDamp", viscDampIx, /*cumulative*/ false);
+		// copies: the tracker takes references, which would keep all of sum on the stack
+		const Real elastic = sum.elastic, dissipated = sum.dissipated, viscous = sum.viscous;
+		scene->energy->add(elastic, "elastPotential", elastPotentialIx, /*reset every step*/ true);
+		if (dissipated != 0) scene->energy->add(dissipated, "plastDissip", plastDissipIx, /*cumulative*/ false);
+		if (viscous != 0) scene->energy->add(viscous, "viscDamp", viscDampIx, /*cumulative*/ false);
 	}
 	return true;
 }

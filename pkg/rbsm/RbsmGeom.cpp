@@ -9,12 +9,7 @@ namespace yade {
 
 YADE_PLUGIN((RbsmGeom));
 
-void RbsmGeom::exactAt(const rbsm::EdgeContact& c, const rbsm::Pose2& rel, bool keepFrozen)
-{
-	if (keepFrozen) frozen = rbsm::freezeContact(c, rel);
-	else frozen.valid = false;
-	frozenSteps = 0;
-}
+void RbsmGeom::freeze(const rbsm::EdgeContact& c, const rbsm::Pose2& rel) { frozen = rbsm::freezeContact(c, rel); }
 
 void RbsmGeom::markLost(Real separationNow)
 {

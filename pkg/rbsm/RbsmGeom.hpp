@@ -92,8 +92,10 @@ public:
 	/// (Inline, below: it runs for every contact at every step, from Ig2_Polygon2D_Polygon2D_RbsmGeom.cpp.)
 	void update(const rbsm::EdgeContact& c, const rbsm::Pose2& frame1, const State& state1, const State& state2);
 	/// After an exact update c at the relative pose rel (block 2 in block 1's frame): freezes it when
-	/// keepFrozen (Ig2's updateTolerance > 0), frozenSteps back to 0.
+	/// keepFrozen (Ig2's updateTolerance > 0), frozenSteps back to 0. (Inline, below: every exact step.)
 	void exactAt(const rbsm::EdgeContact& c, const rbsm::Pose2& rel, bool keepFrozen);
+	/// frozen = rbsm::freezeContact(c, rel) (out of line: rare, and large for the callers of exactAt).
+	void freeze(const rbsm::EdgeContact& c, const rbsm::Pose2& rel);
 	/// The blocks no longer face each other within reach: handed to the law as lost (it ends the joint).
 	void markLost(Real separationNow);
 	// Python's per-point lists
@@ -144,28 +146,39 @@ REGISTER_SERIALIZABLE(RbsmGeom);
 
 inline void RbsmGeom::update(const rbsm::EdgeContact& c, const rbsm::Pose2& frame1, const State& state1, const State& state2)
 {
-	lost = false;
-	// back to the world frame: x ↦ x1 + R(θ1) x for points, R(θ1) for directions
-	normal     = frame1.rotate(c.normal);
-	p0         = frame1.apply(c.p0);
-	p1         = frame1.apply(c.p1);
-	length     = c.length;
-	separation = c.separation;
-	refBody    = c.refBody;
-	refEdge    = c.refEdge;
-	if (c.incEdge >= 0) incEdge = c.incEdge; // (a frozen step keeps the last exact one)
-	centroid1 = state1.pos.head<2>();
-	centroid2 = state2.pos.head<2>();
-	h1        = rbsm::distanceToLine(centroid1, p0, normal);
-	h2        = rbsm::distanceToLine(centroid2, p0, normal);
+	// Computed into locals, stored at the end: for the compiler a store to a member could alias c or
+	// the states, which it would then load again after every store.
+	// Back to the world frame: x ↦ x1 + R(θ1) x for points, R(θ1) for directions.
+	const Vector2r n = frame1.rotate(c.normal), a = frame1.apply(c.p0), b = frame1.apply(c.p1);
+	const Vector2r c1 = state1.pos.head<2>(), c2 = state2.pos.head<2>();
+	const Real     w1 = state1.angVel.z(), w2 = state2.angVel.z();
 	// The relative motion along the segment, which the law samples at its points (kinematics()):
 	// block 2's velocity relative to block 1's at p0, v2 + ω2 × (p0 − c2) − v1 − ω1 × (p0 − c1).
-	const rbsm::SegmentKinematics k = rbsm::segmentKinematics(
-	        c.d0, c.d1, p0, p1, centroid1, state1.vel.head<2>(), state1.angVel.z(), centroid2, state2.vel.head<2>(), state2.angVel.z());
+	const rbsm::SegmentKinematics k = rbsm::segmentKinematics(c.d0, c.d1, a, b, c1, state1.vel.head<2>(), w1, c2, state2.vel.head<2>(), w2);
+	if (c.incEdge >= 0) incEdge = c.incEdge; // (a frozen step keeps the last exact one)
+	lost                    = false;
+	normal                  = n;
+	p0                      = a;
+	p1                      = b;
+	length                  = c.length;
+	separation              = c.separation;
+	refBody                 = c.refBody;
+	refEdge                 = c.refEdge;
+	centroid1               = c1;
+	centroid2               = c2;
+	h1                      = rbsm::distanceToLine(c1, a, n);
+	h2                      = rbsm::distanceToLine(c2, a, n);
 	d0                      = k.d0;
 	d1                      = k.d1;
 	relativeVelocity        = k.v0;
-	relativeAngularVelocity = state2.angVel.z() - state1.angVel.z();
+	relativeAngularVelocity = w2 - w1;
+}
+
+inline void RbsmGeom::exactAt(const rbsm::EdgeContact& c, const rbsm::Pose2& rel, bool keepFrozen)
+{
+	if (keepFrozen) freeze(c, rel);
+	else frozen.valid = false;
+	frozenSteps = 0;
 }
 
 } // namespace yade

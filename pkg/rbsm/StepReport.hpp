@@ -60,13 +60,19 @@ namespace rbsm_report {
 		});
 	}
 
+	/// The report of acrossPeriodicCell (below), out of line: inlined, the setup of its message would be
+	/// scheduled into every call of the functor.
+	[[gnu::cold, gnu::noinline]] inline void refusePeriodic(std::atomic<int>& count, Scene& scene, const char* who, const Interaction& I)
+	{
+		stopForPair(count, scene, who, I.getId1(), I.getId2(), "meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported");
+	}
 	/// Periodic cells are not supported by the block functors: a pair met across the cell's boundary
 	/// (shift2 ≠ 0) is reported and the run stopped after this step, so that no step runs with the
 	/// contacts across it missing. True if refused.
 	inline bool acrossPeriodicCell(std::atomic<int>& count, Scene& scene, const char* who, const Interaction& I, const Vector3r& shift2)
 	{
 		if (shift2 == Vector3r::Zero()) return false;
-		stopForPair(count, scene, who, I.getId1(), I.getId2(), "meet across the boundary of a periodic cell (O.periodic): periodic cells are not supported");
+		refusePeriodic(count, scene, who, I);
 		return true;
 	}
 
