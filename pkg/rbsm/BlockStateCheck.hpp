@@ -1,7 +1,9 @@
 // BlockStateCheck: what is wrong with the state of one RBSM block, for the engine's per-step pass.
 #pragma once
 #include <core/Body.hpp>
+#include <core/State.hpp>
 
+#include <cmath>
 #include <string>
 
 namespace yade {
@@ -12,5 +14,16 @@ namespace yade {
 /// velocity that is not finite. Read-only and cheap (no allocation when fine): called for every body
 /// at every step by RbsmTimeStepper, which reports it by body id and stops the run after the step.
 std::string blockStateProblem(const Body& b);
+
+/// True for the usual block (free in x, y and about z, finite positive mass and inertia, finite pose
+/// and velocities in the plane): blockStateProblem(b) is then "" without a call. False says nothing
+/// (a fixed block, a tilt below the tolerance, a sum that overflows): ask blockStateProblem.
+inline bool blockStateSurelyFine(const State& s)
+{
+	// one sum: a NaN or an infinity anywhere makes it non-finite
+	const Real sum = s.mass + s.inertia.z() + s.ori.w() + s.ori.z() + s.pos.x() + s.pos.y() + s.pos.z() + s.vel.x() + s.vel.y() + s.angVel.z();
+	return std::isfinite(sum) && s.mass > 0 && s.inertia.z() > 0 && s.ori.x() == 0 && s.ori.y() == 0 && s.vel.z() == 0
+	        && s.angVel.x() == 0 && s.angVel.y() == 0;
+}
 
 } // namespace yade

@@ -522,6 +522,7 @@ void RbsmTimeStepper::action()
 		for (const auto& b : scene->bodies->body) {
 			if (!b) continue;
 			reshaped |= followReshape(*b, *scene->bodies);
+			if (b->state && blockStateSurelyFine(*b->state)) continue; // the usual block, without a call
 			const std::string problem = blockStateProblem(*b);
 			if (problem.empty()) continue;
 			rbsm_report::stopForBody(blockStateReports, *scene, "RbsmTimeStepper", b->id, problem);
