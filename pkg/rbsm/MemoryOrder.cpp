@@ -52,7 +52,8 @@ namespace {
 long orderInteractionsInMemory(Scene& scene)
 {
 	InteractionContainer& intrs = *scene.interactions;
-	if (intrs.size() == 0 || hasSubdomains(scene)) return 0;
+	if (intrs.size() == 0) return 0;
+	if (hasSubdomains(scene)) return -1;
 	std::vector<shared_ptr<Interaction>> sorted;
 	sorted.reserve(intrs.size());
 	for (const auto& I : intrs)

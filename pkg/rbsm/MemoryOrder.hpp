@@ -9,6 +9,7 @@ class Scene;
 /// through memory (the collider makes them in sweep order, O.load interleaved with the bodies:
 /// 1.3-1.7x slower per contact-step at 10^4-10^5 blocks, docs/benchmarks.md). An object that
 /// something else also holds (a Python variable, YADE's sorted loop) keeps its place, so that no
-/// reference goes stale. Skipped under yade.mpy (subdomains). Returns the number of interactions.
+/// reference goes stale. Returns the number of interactions (0: none yet), or -1 under yade.mpy
+/// (subdomains), where it is skipped.
 long orderInteractionsInMemory(Scene& scene);
 } // namespace yade

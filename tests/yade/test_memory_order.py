@@ -4,11 +4,11 @@ The collider makes interactions in sweep order (body ids jump by thousands from 
 allocates each one while it reads the body that holds it: consecutive Interaction objects of a loaded 10⁴-block
 wall sat -3168 bytes apart where a freshly built one had them at +336, and the loop ran 1.67x slower
 (scripts/benchmarks/loaded_scene.py). The stepper sorts them and re-creates them (with copies of their RBSM
-geometry and physics next to them) at its first step, so also at the first step after a load.
+geometry and physics next to them) at its first step that has interactions, so also right after a load.
 
 Scenes: a 30 x 30 running-bond wall (900 blocks, frictional joints) run 200 steps with orderInteractions off
 (the collider's order), saved, loaded, the option switched on (a mid-run change); 150 random blocks dropped
-into a box (contacts made all the time). Checked: after the first step of the loaded scene the interactions
+into a box (contacts made all the time); a block dropped from 2 m (no interaction at the first step). Checked: after the first step of the loaded scene the interactions
 are sorted by ids and at ascending addresses (the old code: neither); the same interactions, each found again
 by its ids; one held in a Python variable keeps its object, geometry and physics (no stale reference); with
 InteractionLoop.loopOnSortedInteractions the run continues to the state of the uninterrupted run, bit for bit
@@ -150,3 +150,29 @@ def test_sorted_once_per_engine_object():
     assert on["orderedAt"] == [0] and off["orderedAt"] == [-1]
     for r in (on, off):
         assert r["n"] > 100 and r["ymax"] < 8  # at rest in the box, in contact
+
+
+DROP = """
+from yade_rbsm import polygon2d, engines, advance
+mat = RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5)
+O.materials.append(mat)
+O.bodies.append(polygon2d([(-3, -1), (3, -1), (3, 0), (-3, 0)], mat, fixed=True))
+O.bodies.append(polygon2d([(-0.5, 2), (0.5, 2), (0.5, 3), (-0.5, 3)], mat))
+O.engines = engines(damping=0.3)
+st = [e for e in O.engines if type(e).__name__ == "RbsmTimeStepper"][0]
+advance(1)
+first = (st.orderedAt, len(O.interactions))
+while len(O.interactions) == 0 and O.iter < 100000:
+    advance(10)
+met = O.iter
+advance(20)
+report(first=first, met=met, orderedAt=st.orderedAt)
+"""
+
+
+def test_sorted_when_the_first_interactions_exist():
+    """A block dropped from 2 m: no interaction at the first step, so the sort waits for the first ones."""
+    r, = run_ok(DROP)
+    print(r)
+    assert r["first"] == [-1, 0]
+    assert r["met"] - 10 <= r["orderedAt"] <= r["met"] + 1
