@@ -119,6 +119,29 @@ def build_spheres():
     O.dt = 0.5 * utils.PWaveTimeStep()
 
 
+def build_pile(n=400, seed=1, update_tolerance=0.0):
+    """n random convex blocks (4-8 sides, 0.1-0.2 m across, flattened up to 2:1) on a grid in a 6 m wide box,
+    settled into a random pile (the second scene of issue 22's instruction counts)."""
+    import math
+    import random
+    rng = random.Random(seed)
+    O.resetThisScene()
+    mat = wrapper.RbsmMat(young=1e8, poisson=0.2, frictionAngle=0.6, cohesion=0, tensileStrength=0, density=2000)
+    O.materials.append(mat)
+    W, cols = 6.0, 30
+    O.bodies.append(polygon2d([(-1, -1), (W + 1, -1), (W + 1, 0), (-1, 0)], mat, fixed=True))
+    for x0 in (-1, W):
+        O.bodies.append(polygon2d([(x0, 0), (x0 + 1, 0), (x0 + 1, 10), (x0, 10)], mat, fixed=True))
+    for k in range(n):
+        r, sides, rot = rng.uniform(0.05, 0.1), rng.randint(4, 8), rng.uniform(0, math.pi)
+        cx, cy, squash = (k % cols + 0.5) * W / cols, 0.12 + 0.2 * (k // cols), rng.uniform(0.5, 1.0)
+        pts = [(r * math.cos(rot + 2 * math.pi * i / sides), squash * r * math.sin(rot + 2 * math.pi * i / sides))
+               for i in range(sides)]
+        O.bodies.append(polygon2d([(cx + x, cy + y) for x, y in pts], mat))
+    O.engines = rbsm_engines(gravity=(0, -9.81, 0), damping=0.3, update_tolerance=update_tolerance)
+    O.dt = 1e-6
+
+
 # ----------------------------------------------------------------------------------------------- measure
 def settle():
     """Run until no body moves faster than V_SETTLED and the number of real contacts has not changed over the last
@@ -380,12 +403,14 @@ def run_alternate(rounds=12, steps=150):
 
 
 def run_callgrind_window(mode, warm=10, steps=20):
-    """Build and settle one scene (mode: exact, frozen, spheres, or floor: the exact wall, with the switch of
+    """Build and settle one scene (mode: exact, frozen, spheres, pile, pile-frozen, or floor: the exact wall, with the switch of
     scripts/benchmarks/floor_experiment.patch thrown after settling), run `warm` steps, then `steps` steps with
     valgrind's callgrind instrumentation on (callgrind_control; the process must run under
     `valgrind --tool=callgrind --instr-atstart=no`). Prints the real contacts. For scripts/benchmarks/floor.sh."""
     if mode == "spheres":
         build_spheres()
+    elif mode.startswith("pile"):
+        build_pile(update_tolerance=UT if mode == "pile-frozen" else 0.0)
     else:
         build_wall(nIP=2, update_tolerance=UT if mode == "frozen" else 0.0)
     settle()
