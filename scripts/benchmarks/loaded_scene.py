@@ -80,6 +80,7 @@ def main():
     n, turns = arg("--n", 100), arg("--turns", 3)
     path = arg("--file", "/tmp/rbsm_loaded_scene_%d.yade.gz" % n)
     build_wall(n)
+    order_option()  # (the saved file keeps the order its run had)
     advance(WARM)
     O.save(path)
     threads = str(arg("--j", 1))
