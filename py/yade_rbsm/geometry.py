@@ -12,7 +12,7 @@ keep this module free of relative imports.
 """
 import math
 
-__all__ = ["polygon_area", "signed_area", "polygon_properties", "polygon_centroid", "region_area",
+__all__ = ["polygon_area", "signed_area", "polygon_properties", "polygon_centroid", "z_order", "region_area",
            "point_segment_distance", "point_polyline_distance", "height_above", "interp_y", "Line", "segment_at",
            "clip", "split_by_line", "clean", "split_convex", "cut_polygons", "segments_intersect", "circle_through",
            "points", "monotone", "check_polyline", "check_polygon"]
@@ -71,6 +71,30 @@ def polygon_centroid(poly):
     ox, oy = poly[0]
     a2, cx, cy, _ = _shoelace(poly, ox, oy)
     return cx / (3 * a2) + ox, cy / (3 * a2) + oy
+
+
+def _spread_bits(v):
+    """The 16 low bits of v moved to the even bit positions (0, 2, 4, ...)."""
+    v &= 0xFFFF
+    v = (v | (v << 8)) & 0x00FF00FF
+    v = (v | (v << 4)) & 0x0F0F0F0F
+    v = (v | (v << 2)) & 0x33333333
+    return (v | (v << 1)) & 0x55555555
+
+
+def z_order(points):
+    """Indices of *points* sorted along a Z-order (Morton) curve over their bounding square, 2^16 cells a
+    side: points near each other in the plane get near places in the order (ties keep their order)."""
+    if not points:
+        return []
+    x0, y0 = min(p[0] for p in points), min(p[1] for p in points)
+    span = max(max(p[0] for p in points) - x0, max(p[1] for p in points) - y0)
+    scale = 65535.0 / span if span > 0 else 0.0
+
+    def key(p):
+        return _spread_bits(int((p[0] - x0) * scale)) | (_spread_bits(int((p[1] - y0) * scale)) << 1)
+    keys = [key(p) for p in points]
+    return sorted(range(len(points)), key=keys.__getitem__)
 
 
 def region_area(surface, base):

@@ -9,11 +9,16 @@ __all__ = ["build_scene", "break_crack", "break_joints", "bond_and_break", "unba
 
 def build_scene(sb, material=None, thickness=1.0):
     """Append the blocks of *sb* to O.bodies (slope blocks free, foundation and walls fixed); sets
-    ``Block.id`` and ``sb.ids`` and each body's refPos (for displacements). Returns the ids.
+    ``Block.id`` and ``sb.ids`` (``sb.ids[k]`` is the id of ``sb.blocks[k]``) and each body's refPos (for
+    displacements). Returns the ids. The ids follow a Z-order curve over the blocks' centroids
+    (geometry.z_order), not sb.blocks' order: neighbours get near ids, so that the joints sorted by ids
+    (RbsmTimeStepper.orderInteractions) find both blocks near each other in memory (a 14 404-block
+    Voronoi slope, whose builder numbers blocks at random: 25 % less time per step).
     With layers (``sb.layers``) each slope block takes its layer's material, the fixed blocks
     *material* (default: the bottom layer's); the joints between layers then take the weaker
     material (Ip2_RbsmMat_RbsmMat_RbsmPhys)."""
     from yade import O
+    from . import geometry
     from .blocks import polygon2d
     if material is None and not sb.layers:
         raise ValueError("build_scene: give a material (the blocks have no layers)")
@@ -22,12 +27,12 @@ def build_scene(sb, material=None, thickness=1.0):
         if sb.layers and not b.fixed:
             return sb.layers[b.layer][1]
         return material if material is not None else sb.layers[0][1]
-    bodies = [polygon2d(b.vertices, mat(b), thickness=thickness, fixed=b.fixed) for b in sb.blocks]
-    ids = O.bodies.append(bodies)
-    for b, i in zip(sb.blocks, ids):
+    order = [sb.blocks[k] for k in geometry.z_order([geometry.polygon_centroid(b.vertices) for b in sb.blocks])]
+    bodies = [polygon2d(b.vertices, mat(b), thickness=thickness, fixed=b.fixed) for b in order]
+    for b, i in zip(order, O.bodies.append(bodies)):
         b.id = i
         O.bodies[i].state.refPos = O.bodies[i].state.pos
-    sb.ids = list(ids)
+    sb.ids = [b.id for b in sb.blocks]
     return sb.ids
 
 

@@ -61,6 +61,22 @@ def test_polyline_checks(bad, words):
         G.check_polyline(bad)
 
 
+def test_z_order_keeps_neighbours_near():
+    """z_order (build_scene numbers blocks with it): a permutation, points near in the plane near in the order."""
+    import random
+    rng = random.Random(4)
+    for n, w, h in ((3000, 30.0, 10.0), (500, 1e-3, 2e-3), (200, 1e4, 1.0)):
+        pts = [(rng.uniform(0, w), rng.uniform(0, h)) for _ in range(n)]
+        o = G.z_order(pts)
+        assert sorted(o) == list(range(n))
+        step = sum(math.dist(pts[o[i]], pts[o[i + 1]]) for i in range(n - 1)) / (n - 1)
+        at_random = sum(math.dist(pts[i], pts[i + 1]) for i in range(n - 1)) / (n - 1)
+        assert step < 0.15 * at_random, (n, step, at_random)
+    grid = [(x, y) for y in range(4) for x in range(4)]  # the Z of 2 x 2 cells, then of their quadrants
+    assert [grid[i] for i in G.z_order(grid)][:4] == [(0, 0), (1, 0), (0, 1), (1, 1)]
+    assert G.z_order([]) == [] and G.z_order([(2, 2)]) == [0] and G.z_order([(1, 1)] * 3) == [0, 1, 2]
+
+
 def test_polygon_check_names_a_bow_tie():
     with pytest.raises(ValueError, match="not simple"):
         G.check_polygon([(0, 0), (1, 1), (1, 0), (0, 1)])

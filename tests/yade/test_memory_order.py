@@ -176,3 +176,31 @@ def test_sorted_when_the_first_interactions_exist():
     print(r)
     assert r["first"] == [-1, 0]
     assert r["met"] - 10 <= r["orderedAt"] <= r["met"] + 1
+
+
+NUMBERING = """
+import math
+from yade_rbsm import slope as sl
+sb = sl.voronoi_slope_blocks([(0, 5), (10, 5), (20, 15), (30, 15)], 0.0, spacing=1.0, seed=2, min_distance=0.5,
+                             foundation=1.0, wall=1.0)
+mat = RbsmMat(young=1e8, poisson=0.3, density=2000, frictionAngle=0.6)
+O.materials.append(mat)
+ids = sl.build_scene(sb, mat)
+c = lambda b: b.state.pos
+byid = [O.bodies[i] for i in sorted(ids)]
+step_ids = sum((c(a) - c(b)).norm() for a, b in zip(byid, byid[1:])) / (len(byid) - 1)
+built = [O.bodies[i] for i in ids]
+step_builder = sum((c(a) - c(b)).norm() for a, b in zip(built, built[1:])) / (len(built) - 1)
+same = all(b.id == i and abs(O.bodies[i].state.mass - 2000 * b.area) < 1e-6 * O.bodies[i].state.mass
+           for b, i in zip(sb.blocks, ids)) and ids == sb.ids and sorted(ids) == list(range(len(ids)))
+report(step_ids=step_ids, step_builder=step_builder, same=same, n=len(ids))
+"""
+
+
+def test_build_scene_numbers_blocks_along_a_z_curve():
+    """build_scene gives neighbouring blocks near ids (the Voronoi builder lists them at random); sb.ids[k]
+    and Block.id still name sb.blocks[k]'s body."""
+    r, = run_ok(NUMBERING)
+    print(r)
+    assert r["same"] and r["n"] > 250
+    assert r["step_ids"] < 0.3 * r["step_builder"]
