@@ -63,30 +63,32 @@ def threads():
 
 
 # ----------------------------------------------------------------------------------------------- scenes
-def course(j):
-    """x-extents of the bricks of course j of a running bond: NX bricks, or on odd courses a half brick at each
-    end and NX-1 bricks between (as a mason lays it). Without the half bricks the end brick of every odd course
+def course(j, nx=NX):
+    """x-extents of the bricks of course j of a running bond: nx bricks, or on odd courses a half brick at each
+    end and nx-1 bricks between (as a mason lays it). Without the half bricks the end brick of every odd course
     overhangs by half its length, its centroid right above the corner below: balanced at its tipping point, it
     topples (an inverted pendulum, kinetic energy growing like exp(17/s · t)) and the wall never settles."""
     if j % 2 == 0:
-        return [(i * BW, (i + 1) * BW) for i in range(NX)]
-    return [(0.0, 0.5 * BW)] + [((i + 0.5) * BW, (i + 1.5) * BW) for i in range(NX - 1)] + [((NX - 0.5) * BW, NX * BW)]
+        return [(i * BW, (i + 1) * BW) for i in range(nx)]
+    return [(0.0, 0.5 * BW)] + [((i + 0.5) * BW, (i + 1.5) * BW) for i in range(nx - 1)] + [((nx - 0.5) * BW, nx * BW)]
 
 
-def build_wall(nIP=2, verlet=VERLET_REL * BH, update_tolerance=0.0):
+def build_wall(nIP=2, verlet=VERLET_REL * BH, update_tolerance=0.0, nx=NX, ny=NY):
+    """ny courses of nx bricks on a fixed base (verlet=None: the collider's verletDist as engines() sets it)."""
     O.resetThisScene()
     mat = wrapper.RbsmMat(young=1e9, poisson=0.2, frictionAngle=0.6, cohesion=0, tensileStrength=0, density=2000)
     O.materials.append(mat)
     # fixed base, one block under the whole wall (one brick height)
-    x0, x1 = -BW, (NX + 1) * BW
+    x0, x1 = -BW, (nx + 1) * BW
     O.bodies.append(polygon2d([(x0, -BH), (x1, -BH), (x1, 0), (x0, 0)], mat, fixed=True))
-    for j in range(NY):
+    for j in range(ny):
         y0, y1 = j * BH, (j + 1) * BH
-        for xa, xb in course(j):
+        for xa, xb in course(j, nx):
             O.bodies.append(polygon2d([(xa, y0), (xb, y0), (xb, y1), (xa, y1)], mat))
     O.engines = rbsm_engines(gravity=(0, -9.81, 0), damping=0.2, nIP=nIP, safety=0.8, set_dt=True,
                              update_tolerance=update_tolerance)  # default interval (100)
-    O.engines[1].verletDist = verlet
+    if verlet is not None:
+        O.engines[1].verletDist = verlet
     O.dt = 1e-6  # replaced by RbsmTimeStepper at the first step
 
 
@@ -423,11 +425,12 @@ def run_callgrind_window(mode, warm=10, steps=20):
     print("CALLGRIND_WINDOW mode %s contacts %d steps %d" % (mode, O.interactions.countReal(), steps), flush=True)
 
 
-if "--child" in sys.argv:
-    run_child()
-elif "--alternate" in sys.argv:
-    run_alternate()
-elif "--callgrind-window" in sys.argv:
-    run_callgrind_window(sys.argv[sys.argv.index("--callgrind-window") + 1])
-else:
-    main()
+if __name__ == "__main__":  # (scripts/benchmarks/loaded_scene.py imports build_wall)
+    if "--child" in sys.argv:
+        run_child()
+    elif "--alternate" in sys.argv:
+        run_alternate()
+    elif "--callgrind-window" in sys.argv:
+        run_callgrind_window(sys.argv[sys.argv.index("--callgrind-window") + 1])
+    else:
+        main()

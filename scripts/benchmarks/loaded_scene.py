@@ -14,16 +14,16 @@ import subprocess
 import sys
 import time
 
-from yade import O, wrapper
+from yade import O
 
 import yade_rbsm
-from yade_rbsm import polygon2d, advance
-from yade_rbsm.scene import engines as rbsm_engines
+from yade_rbsm import advance
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(yade_rbsm.__file__))))
 LAUNCHER = os.path.join(ROOT, "build", "yade-rbsm")
 SCRIPT = os.path.join(ROOT, "scripts", "benchmarks", "loaded_scene.py")
-BW, BH = 0.2, 0.1
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+from benchmark_contacts import build_wall as brick_wall  # noqa: E402 (the running-bond wall of that benchmark)
 WARM, TIMED, CHUNKS = 300, 40, 5
 
 
@@ -32,18 +32,7 @@ def arg(name, default):
 
 
 def build_wall(n):
-    O.resetThisScene()
-    mat = wrapper.RbsmMat(young=1e9, poisson=0.2, frictionAngle=0.6, cohesion=0, tensileStrength=0, density=2000)
-    O.materials.append(mat)
-    O.bodies.append(polygon2d([(-BW, -BH), ((n + 1) * BW, -BH), ((n + 1) * BW, 0), (-BW, 0)], mat, fixed=True))
-    for j in range(n):
-        y0, y1 = j * BH, (j + 1) * BH
-        xs = [(i * BW, (i + 1) * BW) for i in range(n)] if j % 2 == 0 else \
-            [(0.0, 0.5 * BW)] + [((i + 0.5) * BW, (i + 1.5) * BW) for i in range(n - 1)] + [((n - 0.5) * BW, n * BW)]
-        for xa, xb in xs:
-            O.bodies.append(polygon2d([(xa, y0), (xb, y0), (xb, y1), (xa, y1)], mat))
-    O.engines = rbsm_engines(gravity=(0, -9.81, 0), damping=0.2, safety=0.8)
-    O.dt = 1e-6
+    brick_wall(nx=n, ny=n, verlet=None)
 
 
 def timed():
