@@ -537,12 +537,11 @@ void RbsmTimeStepper::action()
 	const long made = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
 	if (densityScaling != massScaled) lastCheck = -1, massScaled = densityScaling; // switched: estimate now
 	if (!densityScaling) massScale.clear();
-	const bool due = lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval;
 	// once per engine object, at the first step with interactions (or after O.load: the stepper is in
 	// every RBSM engine list, old saved scenes too); not again: the objects freed by one sort would
 	// hand the next one its memory in reverse (malloc reuses freed blocks last-in first-out)
 	if (orderInteractions && orderedAt < 0 && orderInteractionsInMemory(*scene) != 0) orderedAt = scene->iter;
-	if (due) fullCheck();
+	if (lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval) fullCheck();
 	else if (made != jointsSeen) densityScaling ? fullCheck() : addJointsMadeThisStep(); // scales need the full rows
 	jointsSeen          = made;
 	keepBoundsAhead();
