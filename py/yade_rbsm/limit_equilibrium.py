@@ -418,17 +418,27 @@ def _positive_interval(xs: List[float], f, lo: float, hi: float, tol: float, wha
 
 def _finish_slices(slope: Slope, xm, b, ybase, alpha_geom, x_entry, x_exit, what) -> Slices:
     """Compute weights, strengths, pore pressures; fix the sliding sense."""
-    n = xm.size
-    W = np.empty(n)
-    u = np.empty(n)
-    c = np.empty(n)
-    tphi = np.empty(n)
-    for i in range(n):
-        W[i] = slope.column_weight(float(xm[i]), float(ybase[i]), float(b[i]))
-        u[i] = slope.pore_pressure(float(xm[i]), float(ybase[i]), W[i], float(b[i]))
-        L = slope.layer_at(float(xm[i]), float(ybase[i]))
-        c[i] = L.c
-        tphi[i] = L.tan_phi
+    # column_weight, pore_pressure and layer_at of every slice at once (same arithmetic, per slice):
+    # the critical-circle search cuts hundreds of circles into slices
+    e = [np.asarray(slope.ground(xm), dtype=float)]
+    for L in slope.layers[1:]:
+        e.append(np.minimum(e[-1], _interp(L.top, xm)))
+    e.append(np.full(xm.shape, -math.inf))
+    W = np.zeros(xm.shape)
+    c = np.full(xm.shape, slope.layers[0].c)
+    tphi = np.full(xm.shape, slope.layers[0].tan_phi)
+    for i, L in enumerate(slope.layers):
+        W = W + L.gamma * np.maximum(0.0, e[i] - np.maximum(e[i + 1], ybase))
+        deeper = ybase <= e[i] + slope.tol  # layer_at: the deepest layer whose top is at or above the base
+        c = np.where(deeper, L.c, c)
+        tphi = np.where(deeper, L.tan_phi, tphi)
+    W = W * b
+    if slope.phreatic is not None:
+        u = slope.gamma_w * np.maximum(0.0, _interp(slope.phreatic, xm) - ybase)
+    elif slope.ru > 0.0:
+        u = slope.ru * W / b
+    else:
+        u = np.zeros(xm.shape)
     # alpha_geom: angle of the base rising towards +x.  A mass sliding
     # towards -x is driven by bases rising towards +x.
     drive = float(np.sum(W * np.sin(alpha_geom)))

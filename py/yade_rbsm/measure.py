@@ -17,10 +17,11 @@ Stresses follow YADE's sign convention (tension positive, compression negative) 
 (gravity) act inside the blocks and are not part of the sum (as in YADE's Love-Weber stress).
 """
 import math
+import types
 
 from . import omega
 
-__all__ = ["joint_point_forces", "block_stresses", "stress", "fabric_tensor", "aabb_extrema", "porosity"]
+__all__ = ["joint_point_forces", "joint_table", "block_stresses", "stress", "fabric_tensor", "aabb_extrema", "porosity"]
 
 
 def _O(O):
@@ -57,19 +58,60 @@ def joint_point_forces(I):
     return out
 
 
-def _moments(O):
-    """{body id: [[Σ x fx, Σ x fy], [Σ y fx, Σ y fy]]} of the joint forces on each block, x relative to its centroid."""
-    M = {}
+def joint_table(O=None):
+    """The real RBSM joints in one pass over O.interactions, as numpy arrays (what exports and averages
+    over many joints read; one Python loop instead of one per measure). Per joint (length J):
+    ``id1``, ``id2``, ``p0``, ``p1``, ``normal``, ``tangent`` (J×2), ``length``, ``thickness``,
+    ``normalForce``, ``shearForce``, ``strength``, ``nIntact``, ``nSlipping``, ``nOpen``, ``nPoints``;
+    per integration point (length P): ``joint`` (index of its joint), ``x`` (P×2, world position),
+    ``force`` (P×2, on body 2: (σn n + τ t) w ℓ thickness, as :func:`joint_point_forces`)."""
+    import numpy as np
+    O = _O(O)
+    ids, segs, scal, counts, pts = [], [], [], [], []
     for I in _rbsm_joints(O):
-        c1, c2 = O.bodies[I.id1].state.pos, O.bodies[I.id2].state.pos
-        for x, y, fx, fy in joint_point_forces(I):
-            for bid, c, s in ((I.id1, c1, -1.0), (I.id2, c2, 1.0)):
-                m = M.setdefault(bid, [[0.0, 0.0], [0.0, 0.0]])
-                rx, ry = x - c[0], y - c[1]
-                m[0][0] += s * rx * fx
-                m[0][1] += s * rx * fy
-                m[1][0] += s * ry * fx
-                m[1][1] += s * ry * fy
+        g, ph = I.geom, I.phys
+        p0, p1, n = g.p0, g.p1, g.normal
+        ids.append((I.id1, I.id2))
+        segs.append((p0[0], p0[1], p1[0], p1[1], n[0], n[1]))
+        scal.append((g.length, g.thickness, ph.normalForce, ph.shearForce, ph.strength))
+        sn, tau = ph.normalTraction, ph.shearTraction
+        counts.append((ph.nIntact, ph.nSlipping, ph.nOpen, len(sn)))
+        pts.append((g.positions, g.weights, sn, tau))
+    J = len(ids)
+    ids = np.array(ids, dtype=np.int64).reshape(J, 2)
+    segs = np.array(segs, dtype=float).reshape(J, 6)
+    scal = np.array(scal, dtype=float).reshape(J, 5)
+    counts = np.array(counts, dtype=np.int64).reshape(J, 4)
+    t = types.SimpleNamespace(id1=ids[:, 0], id2=ids[:, 1], p0=segs[:, 0:2], p1=segs[:, 2:4], normal=segs[:, 4:6],
+                              length=scal[:, 0], thickness=scal[:, 1], normalForce=scal[:, 2], shearForce=scal[:, 3],
+                              strength=scal[:, 4], nIntact=counts[:, 0], nSlipping=counts[:, 1], nOpen=counts[:, 2],
+                              nPoints=counts[:, 3])
+    t.tangent = np.column_stack((-t.normal[:, 1], t.normal[:, 0]))  # YADE's t = (-n.y, n.x)
+    t.joint = np.repeat(np.arange(J), t.nPoints)
+    flat = [np.fromiter((v for p in pts for v in p[k]), dtype=float, count=len(t.joint)) for k in range(4)]
+    s, w, sn, tau = flat
+    j = t.joint
+    t.x = t.p0[j] + s[:, None] * (t.p1[j] - t.p0[j])
+    a = w * t.length[j] * t.thickness[j]
+    t.force = (sn[:, None] * t.normal[j] + tau[:, None] * t.tangent[j]) * a[:, None]
+    return t
+
+
+def _moments(O, table=None):
+    """Per body id, the 2×2 sums [[Σ x fx, Σ x fy], [Σ y fx, Σ y fy]] of the joint forces on the block,
+    x relative to its centroid (numpy array indexed by body id; rows of bodies without joints are 0)."""
+    import numpy as np
+    t = joint_table(O) if table is None else table
+    nb = len(O.bodies)
+    c = np.zeros((nb, 2))
+    for b in O.bodies:
+        if b is not None:
+            c[b.id] = (b.state.pos[0], b.state.pos[1])
+    M = np.zeros((nb, 2, 2))
+    for body, sign in ((t.id1, -1.0), (t.id2, 1.0)):
+        bid = body[t.joint]
+        r = t.x - c[bid]
+        np.add.at(M, bid, sign * r[:, :, None] * t.force[:, None, :])
     return M
 
 
@@ -78,15 +120,16 @@ def _matrix3(m, scale):
     return Matrix3(m[0][0] * scale, m[1][0] * scale, 0, m[0][1] * scale, m[1][1] * scale, 0, 0, 0, 0)
 
 
-def block_stresses(O=None):
+def block_stresses(O=None, table=None):
     """{body id: Matrix3} average stress of every Polygon2D block [Pa], σ[i][j] = (1/V) Σ f_i x_j
-    (symmetric in equilibrium); the RBSM counterpart of YADE's ``bodyStressTensors()``."""
+    (symmetric in equilibrium); the RBSM counterpart of YADE's ``bodyStressTensors()``. *table*: a
+    :func:`joint_table` of the same state, if the caller has one."""
     O = _O(O)
-    M = _moments(O)
+    M = _moments(O, table)
     out = {}
     for b in _blocks(O):
         v = b.shape.area * b.shape.thickness
-        out[b.id] = _matrix3(M.get(b.id, [[0.0, 0.0], [0.0, 0.0]]), 1.0 / v)
+        out[b.id] = _matrix3(M[b.id], 1.0 / v)
     return out
 
 
@@ -101,13 +144,7 @@ def stress(ids=None, volume=None, O=None):
     if not blocks:
         raise ValueError("measure.stress: no Polygon2D block among %s" % ("the free bodies" if ids is None else "ids %r" % (list(ids),)))
     M = _moments(O)
-    tot = [[0.0, 0.0], [0.0, 0.0]]
-    for b in blocks:
-        m = M.get(b.id)
-        if m:
-            for i in range(2):
-                for j in range(2):
-                    tot[i][j] += m[i][j]
+    tot = sum((M[b.id] for b in blocks), start=M[0] * 0.0)
     v = volume if volume is not None else sum(b.shape.area * b.shape.thickness for b in blocks)
     if not (v > 0):
         raise ValueError("measure.stress: volume must be > 0 (got %r)" % (v,))

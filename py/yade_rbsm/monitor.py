@@ -137,7 +137,9 @@ class Monitor:
         plot.saveDataTxt(txt)
         data = plot.data
         t = data.get("t", [])
-        fig, axs = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
+        # fixed margins: tight_layout measured every tick label and took half of the time
+        fig, axs = plt.subplots(4, 1, figsize=(8, 10), sharex=True,
+                                gridspec_kw=dict(left=0.11, right=0.97, bottom=0.05, top=0.96, hspace=0.08))
         for k in ["d_%d" % i for i in self.ids] + ["dmax"]:
             if k in data:
                 axs[0].plot(t, data[k], "k:" if k == "dmax" else "-", label=k, lw=2 if k == "dmax" else 1)
@@ -161,7 +163,6 @@ class Monitor:
         for tm, lab in self.marks:
             axs[0].annotate(lab, (tm, 1), xycoords=("data", "axes fraction"), fontsize=7, ha="left", va="top",
                             rotation=90, color="0.3")
-        fig.tight_layout()
         png = base + ".png"
         fig.savefig(png, dpi=100)
         plt.close(fig)

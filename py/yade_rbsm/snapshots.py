@@ -52,7 +52,8 @@ def snapshot(path, title="", vmax=None, O=None, slip=None, dpi=110):
     fixed = [p for p in polys if p[3]]
     disp = [p[2] for p in free]
     vmax = vmax if vmax is not None else max(max(disp, default=0.0), 1e-6)
-    fig, ax = plt.subplots(figsize=(9, 5))
+    # fixed margins instead of tight_layout, which measured every tick label and took half of the time
+    fig, ax = plt.subplots(figsize=(9, 5), gridspec_kw=dict(left=0.07, right=0.94, bottom=0.1, top=0.93))
     if fixed:
         ax.add_collection(PolyCollection([p[1] for p in fixed], facecolors="0.8", edgecolors="0.4", linewidths=0.5))
     pc = PolyCollection([p[1] for p in free], array=disp, cmap="viridis", edgecolors="k", linewidths=0.3)
@@ -71,9 +72,8 @@ def snapshot(path, title="", vmax=None, O=None, slip=None, dpi=110):
     ax.set_aspect("equal")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
-    fig.colorbar(pc, ax=ax, label="displacement [m]", shrink=0.8)
+    fig.colorbar(pc, ax=ax, label="displacement [m]", shrink=0.8, fraction=0.05, pad=0.02)
     ax.set_title(title + ("  (red: failed joints, %d)" % len(segs)))
-    fig.tight_layout()
     fig.savefig(path, dpi=dpi)
     plt.close(fig)
     return path

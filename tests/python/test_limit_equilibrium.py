@@ -295,6 +295,31 @@ def test_circle_weight_equals_sliding_area_times_gamma():
     assert float(np.sum(sl.W)) == pytest.approx(20.0 * area, rel=3e-3)
 
 
+@pytest.mark.parametrize("water", ["dry", "ru", "phreatic"])
+def test_slices_equal_the_per_column_functions(water):
+    """circle_slices computes every slice at once (numpy); its weights, pore pressures and base
+    strengths equal, to the bit, Slope.column_weight, pore_pressure and layer_at slice by slice on
+    a two-layer slope with a layer top crossing the circles, for 300 random circles."""
+    kw = {"dry": {}, "ru": {"ru": 0.25}, "phreatic": {"phreatic": [(0, -1), (20, 6), (40, 8)]}}[water]
+    s = Slope([(0, 0), (10, 0), (20, 10), (40, 10)],
+              [Layer(c=5.0, phi=30.0, gamma=19.0), Layer(c=20.0, phi=15.0, gamma=21.0, top=[(0, -2), (15, 3), (40, 4)])],
+              **kw)
+    rng = np.random.default_rng(7)
+    cut = 0
+    for xc, yc, R in zip(rng.uniform(5, 30, 300), rng.uniform(5, 30, 300), rng.uniform(5, 40, 300)):
+        try:
+            sl = le.circle_slices(s, Circle(xc, yc, R))
+        except ValueError:
+            continue
+        cut += 1
+        for i in range(sl.W.size):
+            x, y, b = float(sl.x[i]), float(sl.y_base[i]), float(sl.b[i])
+            W = s.column_weight(x, y, b)
+            L = s.layer_at(x, y)
+            assert (sl.W[i], sl.u[i], sl.c[i], sl.tan_phi[i]) == (W, s.pore_pressure(x, y, W, b), L.c, L.tan_phi)
+    assert cut > 50
+
+
 def test_critical_circle_is_deterministic_and_minimal():
     """Two identical searches return the same circle; the returned FS is
     not larger than any circle of the grid evaluated directly."""

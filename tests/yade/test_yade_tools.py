@@ -85,6 +85,30 @@ report(blocks={i: [[bs[i][a, b] for b in range(3)] for a in range(3)] for i in (
     assert r["base"][1][1] == pytest.approx(-(P + 3 * W) * 0.5 / 6.0, rel=2e-3)
 
 
+def test_joint_table_is_the_joints_point_by_point():
+    """measure.joint_table (one pass, numpy; what the VTK export and block_stresses read) holds, joint
+    by joint, the ids, ends, forces and counts of each joint and the points and forces of
+    joint_point_forces, on the loaded column with a sliding block added (slipping and open points)."""
+    r = run_ok(COLUMN + """
+O.bodies.append(polygon2d([(-3, 4.5), (-1, 3.0), (-1, 4.5)], rock))
+O.bodies[-1].state.vel = (0.5, -0.2, 0)
+O.run(20, True)
+from yade_rbsm import omega
+t = measure.joint_table()
+js = list(omega.joints())
+ok = len(js) == len(t.id1) > 3
+for k, I in enumerate(js):
+    g, ph = I.geom, I.phys
+    ok &= (t.id1[k], t.id2[k]) == (I.id1, I.id2) and tuple(t.p0[k]) == (g.p0[0], g.p0[1]) and tuple(t.p1[k]) == (g.p1[0], g.p1[1])
+    ok &= (t.normalForce[k], t.shearForce[k], t.nIntact[k], t.nSlipping[k], t.nOpen[k]) == (ph.normalForce, ph.shearForce, ph.nIntact, ph.nSlipping, ph.nOpen)
+    mine = [(x[0], x[1], f[0], f[1]) for x, f in zip(t.x[t.joint == k], t.force[t.joint == k])]
+    ref = measure.joint_point_forces(I)
+    ok &= len(mine) == len(ref) == t.nPoints[k] and all(abs(a - b) <= 1e-9 * (1 + abs(b)) for m, q in zip(mine, ref) for a, b in zip(m, q))
+report(ok=bool(ok), n=len(js), slipping=int(sum(t.nSlipping)))
+""")[0]
+    assert r["ok"] and r["n"] > 3, r
+
+
 def test_fabric_extrema_porosity_of_the_column():
     r = run_ok(COLUMN + """
 F, Fw = measure.fabric_tensor(), measure.fabric_tensor(weighted=True)
