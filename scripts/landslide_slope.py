@@ -84,6 +84,9 @@ ap.add_argument("--tol", type=float, default=1e-3, help="unbalanced-force ratio 
 ap.add_argument("--max-settle", type=int, default=20000, help="max steps of the gravity stage")
 ap.add_argument("--time", type=float, default=3.0, help="simulated time of the dynamic stage [s]")
 ap.add_argument("--dt", type=float, default=None, help="time step [s] (default: 0.8 x critical)")
+ap.add_argument("--impact-safety", type=float, default=None,
+                help="RbsmTimeStepper.impactSafety of the undamped stage (default 0.25; 0.8: the stable step alone, as "
+                     "before issue 14: 3.2x fewer steps, impacts less accurate)")
 ap.add_argument("--update-tolerance", type=float, default=0.0,
                 help="Ig2 updateTolerance: frozen contact kinematics between exact updates (default 0: exact geometry)")
 ap.add_argument("--small", action="store_true", help="tiny slope for smoke tests")
@@ -199,6 +202,8 @@ if mp is not None:
 nj, nbroken = sl.bond_and_break(sb)
 dtc = yr.critical_time_step()
 ts = omega.engine("timeStepper")
+if args.impact_safety is not None:
+    ts.impactSafety = args.impact_safety
 if args.dt:
     O.dt = args.dt  # the time stepper refuses it if it exceeds its stable limit
 else:

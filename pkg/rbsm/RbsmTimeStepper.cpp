@@ -257,17 +257,21 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 		const Body::id_t                 id1 = I->getId1(), id2 = I->getId2();
 		const std::vector<rbsm::DynBody> pair { dynBody(*bodies[id1]), dynBody(*bodies[id2]) };
 		if (!jointAsDynContact(*I, 0, 1, c)) continue;
-		Real add[2];
-		rbsm::contactRowBounds(pair, c, add[0], add[1]);
+		Real add[2], diag[2];
+		rbsm::contactRowBounds(pair, c, add[0], add[1], &diag[0], &diag[1]);
 		const RbsmPhys& p    = static_cast<const RbsmPhys&>(*I->phys);
 		Real            area = 0;
 		for (Real a : c.areas) area += a;
-		int side = 0;
-		for (Body::id_t id : { id1, id2 }) {
-			rowBounds[kRow * id] += add[side++];
+		for (int side = 0; side < 2; side++) {
+			const Body::id_t id = side == 0 ? id1 : id2;
+			rowBounds[kRow * id] += add[side];
 			if (p.dampingCoefficient > 0) {
 				rowBounds[kRow * id + 1] += p.dampingCoefficient * area;
 				rowBounds[kRow * id + 2] += std::min(p.kn, p.ks) * area;
+			}
+			if (scalesHold(bodies.size())) { // its rows grew: its scale again, at the same target
+				rowDiag[id] += diag[side];
+				massScale[id] = massScaleOf(size_t(id));
 			}
 			if (!ownedHere(*bodies[id])) continue;
 			const Real dt = blockDt(size_t(id));
@@ -376,13 +380,28 @@ void RbsmTimeStepper::scaleMasses()
 	}
 	std::nth_element(own.begin(), own.begin() + own.size() / 2, own.end());
 	scaledDt = targetDt > 0 ? targetDt : own[own.size() / 2];
-	for (size_t id = 0; id < bodies.size() && kRow * id < rowBounds.size(); id++) {
-		const Real w2 = rowBounds[kRow * id];
-		if (!(w2 > 0)) continue;
-		const Real damped = blockDt(id) * std::sqrt(w2) / 2; // the dashpots' factor on 2/ω
-		const Real wT     = 2 * safetyFactor * damped / (scaledDt * std::sqrt(1 + newtonDamping));
-		massScale[id]     = rbsm::densityScale(rowDiag[id], w2 - rowDiag[id], wT * wT);
-	}
+	for (size_t id = 0; id < bodies.size() && kRow * id < rowBounds.size(); id++)
+		massScale[id] = massScaleOf(id);
+}
+
+// The scale that lets body id's rows (rowBounds, rowDiag) run at scaledDt.
+Real RbsmTimeStepper::massScaleOf(size_t id) const
+{
+	const Real w2 = rowBounds[kRow * id];
+	if (!(w2 > 0)) return 1;
+	const Real damped = blockDt(id) * std::sqrt(w2) / 2; // the dashpots' factor on 2/ω
+	const Real wT     = 2 * safetyFactor * damped / (scaledDt * std::sqrt(1 + newtonDamping));
+	return rbsm::densityScale(rowDiag[id], w2 - rowDiag[id], wT * wT);
+}
+
+// Density scaling with the rows of a full estimate in this process (after O.load there are none:
+// the saved scales run until the next full estimate), grown to nBodies for bodies added since.
+bool RbsmTimeStepper::scalesHold(size_t nBodies)
+{
+	if (!densityScaling || !massScaled || rowDiag.empty() || !std::isfinite(scaledDt)) return false;
+	if (rowDiag.size() < nBodies) rowDiag.resize(nBodies, 0);
+	if (massScale.size() < nBodies) massScale.resize(nBodies, 1);
+	return true;
 }
 
 // The scaled blocks' accelerations: NewtonIntegrator divides force + m g by m; adding (1/s − 1) of
@@ -542,7 +561,9 @@ void RbsmTimeStepper::action()
 	// hand the next one its memory in reverse (malloc reuses freed blocks last-in first-out)
 	if (orderInteractions && orderedAt < 0 && orderInteractionsInMemory(*scene) != 0) orderedAt = scene->iter;
 	if (lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval) fullCheck();
-	else if (made != jointsSeen) densityScaling ? fullCheck() : addJointsMadeThisStep(); // scales need the full rows
+	// a joint made since: its rows (and scales) grow by bounds, at this step; without the rows of a
+	// full estimate in this process (a loaded scene), an estimate now
+	else if (made != jointsSeen) densityScaling && !scalesHold(scene->bodies->body.size()) ? fullCheck() : addJointsMadeThisStep();
 	jointsSeen          = made;
 	keepBoundsAhead();
 	const Real travelDt = checkMotion();

@@ -96,6 +96,8 @@ private:
 	Real checkMotion();
 	void keepBoundsAhead();
 	void scaleMasses();
+	Real massScaleOf(size_t id) const;
+	bool scalesHold(size_t nBodies);
 	void applyMassScale();
 	template <class Keep> const std::vector<const Interaction*>& jointsByIds(Keep keep);
 	Real firstContactEstimate() const;

@@ -134,16 +134,28 @@ TEST(CriticalTimeStep, RowBoundsOfANewContactAddUp)
 		};
 		const std::vector<DynContact> before = { randomContact(0, 1) };
 		const DynContact              added  = randomContact(1, 2);
-		std::vector<Real>             rows;
-		criticalTimeStepGershgorin(b, before, &rows);
-		Real add1, add2;
-		contactRowBounds(b, added, add1, add2);
+		std::vector<Real>             rows, diag;
+		criticalTimeStepGershgorin(b, before, &rows, &diag);
+		Real add1, add2, diag1, diag2;
+		contactRowBounds(b, added, add1, add2, &diag1, &diag2);
 		rows[1] += add1, rows[2] += add2;
+		diag[1] += diag1, diag[2] += diag2; // (density scaling's increments)
 		const Real bound = 2 / std::sqrt(*std::max_element(rows.begin(), rows.end()));
 		std::vector<DynContact> all = before;
 		all.push_back(added);
 		EXPECT_LE(bound, criticalTimeStepGershgorin(b, all) * (1 + 1e-12));
 		EXPECT_LE(bound, criticalTimeStepExact(b, all) * (1 + 1e-12));
+		std::vector<Real> rowsAll, diagAll;
+		criticalTimeStepGershgorin(b, all, &rowsAll, &diagAll);
+		for (int k = 1; k < 3; ++k) {
+			EXPECT_GE(diag[k], diagAll[k] * (1 - 1e-12)) << trial;             // the own-block share, bounded
+			EXPECT_GE(rows[k] - diag[k], (rowsAll[k] - diagAll[k]) * (1 - 1e-12) - 1e-9 * rowsAll[k]) << trial; // and the coupling
+		}
+		// alone on its two blocks, the diagonal parts are the estimate's own
+		std::vector<Real> rowsNew, diagNew;
+		criticalTimeStepGershgorin(b, { added }, &rowsNew, &diagNew);
+		EXPECT_NEAR(diag1, diagNew[1], 1e-12 * diagNew[1]);
+		EXPECT_NEAR(diag2, diagNew[2], 1e-12 * diagNew[2]);
 	}
 }
 

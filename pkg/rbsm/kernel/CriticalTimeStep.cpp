@@ -64,13 +64,15 @@ namespace {
 	Eigen::Vector3d inverseSqrtMass(const DynBody& b) { return Eigen::Vector3d(1 / std::sqrt(b.mass), 1 / std::sqrt(b.mass), 1 / std::sqrt(b.inertia)); }
 } // namespace
 
-void contactRowBounds(const std::vector<DynBody>& bodies, const DynContact& c, Real& add1, Real& add2)
+void contactRowBounds(const std::vector<DynBody>& bodies, const DynContact& c, Real& add1, Real& add2, Real* diag1, Real* diag2)
 {
 	checkContact(bodies, c);
 	const DynBody &b1 = bodies[c.body1], &b2 = bodies[c.body2];
 	const ContactBlocks K = contactStiffness(bodies, c);
 	add1 = b1.fixed ? 0 : lambdaMax(inverseSqrtMass(b1).asDiagonal() * K.K11 * inverseSqrtMass(b1).asDiagonal());
 	add2 = b2.fixed ? 0 : lambdaMax(inverseSqrtMass(b2).asDiagonal() * K.K22 * inverseSqrtMass(b2).asDiagonal());
+	if (diag1) *diag1 = add1;
+	if (diag2) *diag2 = add2;
 	if (!b1.fixed && !b2.fixed) {
 		const Mat3 S12  = inverseSqrtMass(b1).asDiagonal() * K.K12 * inverseSqrtMass(b2).asDiagonal();
 		const Real norm = std::sqrt(lambdaMax(S12.transpose() * S12));

@@ -66,8 +66,10 @@ Real densityScale(Real diag, Real off, Real omegaT2);
 /// values above): lambda_max(S_bb) + ||S_12|| for each side (0 for a fixed body; the coupling term
 /// only between two free bodies). Both terms are subadditive over contacts, so adding these to the
 /// bounds of an earlier estimate bounds the estimate with the contact included: a contact made
-/// between two estimates is accounted for at once, without a new estimate.
-void contactRowBounds(const std::vector<DynBody>& bodies, const DynContact& contact, Real& add1, Real& add2);
+/// between two estimates is accounted for at once, without a new estimate. diag1, diag2 (optional): the
+/// lambda_max(S_bb) terms alone (the perBodyDiag increments, for densityScale).
+void contactRowBounds(
+        const std::vector<DynBody>& bodies, const DynContact& contact, Real& add1, Real& add2, Real* diag1 = nullptr, Real* diag2 = nullptr);
 
 /// omega^2 of the stiffest single joint a block can form: one of its edges in full contact with a
 /// fixed partner (two Gauss points: the exact integral, an upper bound for every rule), the springs
