@@ -90,3 +90,36 @@ report(vmax=vmax, checks=checks, scaled=sum(1 for s in ts.massScale if s > 1), i
     assert r["vmax"] < 1e-2, r
     assert r["scaled"] > 0, r
     assert r["checks"] <= 7, "estimates ran at joints made between the scheduled ones (6 scheduled): %s" % r
+
+
+def test_a_joint_on_a_frictmat_wall_made_between_estimates_scales_its_block():
+    """A block's joint on a YADE Wall of FrictMat (Ip2_RbsmMat_FrictMat_FrictPhys makes its RbsmPhys)
+    is a joint like one on an RbsmMat wall: it was not counted as made, so the stepper never added it
+    between estimates. Under density scaling the 5 cm block kept massScale 1 at the median block's
+    step (10x its own) and was thrown off the wall at 29 m/s, stopping the run."""
+    (r,) = run_ok(SCENE + """
+from yade import utils
+from yade_rbsm import mixed_engines
+steel = wrapper.FrictMat(young=1e8, poisson=0.2, density=7800, frictionAngle=0.5)
+O.materials.append(steel)
+wall = O.bodies.append(utils.wall((0, -3, 0), axis=1, material=steel))
+O.engines = mixed_engines(gravity=(0, -9.81, 0), damping=0.7)
+ts = time_stepper()
+ts.densityScaling, ts.interval = True, 100000
+drop = O.bodies.append(polygon2d([(8, -2.95), (8.05, -2.95), (8.05, -2.9), (8, -2.9)], rock))
+advance(1)  # the first step of the new engines: a full estimate
+before = ts.lastCheck
+js = []
+for k in range(20000):
+    advance(1)
+    js = [I for I in O.interactions if I.isReal and drop in (I.id1, I.id2)]
+    if js:
+        break
+assert js and wall in (js[0].id1, js[0].id2), "the block never landed on the wall"
+scale = ts.massScale[drop]
+advance(2000)
+report(before=before, last=ts.lastCheck, scale=scale, v=O.bodies[drop].state.vel.norm())
+""")
+    assert r["last"] == r["before"], r
+    assert r["scale"] > 1, "the block's joint on the wall was not added to its rows: %s" % r
+    assert r["v"] < 0.1, r
