@@ -500,7 +500,9 @@ void RbsmTimeStepper::keepBoundsAhead()
 
 Real RbsmTimeStepper::stableDt() const
 {
-	if (densityScaling && massScaled) return scaledDt; // the blocks below it are scaled up to it
+	// the blocks below it are scaled up to it; without a jointed block (a pile dropped, scaledDt inf)
+	// the unscaled step of the first contacts, as without scaling (inf left O.dt at YADE's 1e-8)
+	if (densityScaling && massScaled && std::isfinite(scaledDt)) return scaledDt;
 	const Real firstSafety = impactsMatter() ? impactSafety : safetyFactor;
 	return std::min(safetyFactor * criticalDt, firstSafety * firstContactDt) / std::sqrt(1 + newtonDamping);
 }

@@ -123,3 +123,29 @@ report(before=before, last=ts.lastCheck, scale=scale, v=O.bodies[drop].state.vel
     assert r["last"] == r["before"], r
     assert r["scale"] > 1, "the block's joint on the wall was not added to its rows: %s" % r
     assert r["v"] < 0.1, r
+
+
+def test_blocks_dropped_without_joints_run_at_the_first_contact_step():
+    """Density scaling on a scene without joints yet (a pile dropped on its base): the scaled step is
+    the median jointed block's, so none (scaledDt inf), and the stepper set no step at all: O.dt stayed
+    at YADE's 1e-8 s (a block 0.5 m above its base fell 2 micrometres in 20000 steps). Until the first
+    joint it is now the unscaled step of the first contacts, as without scaling."""
+    (r,) = run_ok("""
+from yade import O, wrapper
+from yade_rbsm import polygon2d, engines, time_stepper, advance
+rock = wrapper.RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5)
+O.materials.append(rock)
+O.bodies.append(polygon2d([(-2, -1), (2, -1), (2, 0), (-2, 0)], rock, fixed=True))
+b = O.bodies.append(polygon2d([(-0.2, 0.5), (0.2, 0.5), (0.2, 0.9), (-0.2, 0.9)], rock))
+O.engines = engines(gravity=(0, -9.81, 0), damping=0.7)
+ts = time_stepper()
+ts.densityScaling = True
+advance(1)
+dt0, first, scaled0 = O.dt, ts.firstContactDt, ts.scaledDt
+advance(20000)
+report(dt0=dt0, first=first, scaled0=scaled0, y=O.bodies[b].state.pos[1], v=O.bodies[b].state.vel.norm(),
+       scale=ts.massScale[b], scaledDt=ts.scaledDt)
+""")
+    assert r["scaled0"] == float("inf") and r["first"] < float("inf"), r
+    assert abs(r["dt0"] / (r["first"] * 0.8 / 1.7 ** 0.5) - 1) < 1e-12, "no jointed block: O.dt must be the first contacts' step: %s" % r
+    assert abs(r["y"] - 0.2) < 1e-3 and r["v"] < 1e-3, "the block must land and rest on its base: %s" % r
