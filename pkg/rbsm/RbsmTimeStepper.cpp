@@ -394,8 +394,8 @@ Real RbsmTimeStepper::massScaleOf(size_t id) const
 	return rbsm::densityScale(rowDiag[id], w2 - rowDiag[id], wT * wT);
 }
 
-// Density scaling with the rows of a full estimate in this process (after O.load there are none:
-// the saved scales run until the next full estimate), grown to nBodies for bodies added since.
+// Density scaling with the rows of a full estimate (saved with the scene; a file of an older build
+// has none: a full estimate then), grown to nBodies for bodies added since.
 bool RbsmTimeStepper::scalesHold(size_t nBodies)
 {
 	if (!densityScaling || !massScaled || rowDiag.empty() || !std::isfinite(scaledDt)) return false;
@@ -564,7 +564,7 @@ void RbsmTimeStepper::action()
 	if (orderInteractions && orderedAt < 0 && orderInteractionsInMemory(*scene) != 0) orderedAt = scene->iter;
 	if (lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval) fullCheck();
 	// a joint made since: its rows (and scales) grow by bounds, at this step; without the rows of a
-	// full estimate in this process (a loaded scene), an estimate now
+	// full estimate (a scene saved by an older build), an estimate now
 	else if (made != jointsSeen) densityScaling && !scalesHold(scene->bodies->body.size()) ? fullCheck() : addJointsMadeThisStep();
 	jointsSeen          = made;
 	keepBoundsAhead();

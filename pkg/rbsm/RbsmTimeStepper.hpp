@@ -78,7 +78,8 @@ public:
 		((Real, stepDt, std::numeric_limits<Real>::infinity(), (Attr::readonly | Attr::noSave), "The step chosen at the last run [s]: min(stableDt, maxDt, the travel limit of maxStepMotion); what setDt sets (inf: no block of this rank bounds it). Under yade.mpy the sync engine sets O.dt to its minimum over the ranks."))
 		((bool, orderInteractions, true, , "Sort the interactions by body ids, in the container and in memory (MemoryOrder.hpp), once, at the first step of this engine that has interactions (so also right after O.load). The collider makes them in sweep order and O.load interleaves them with the bodies, which made a contact-step 1.3-1.7x slower at 10^4-10^5 blocks (docs/benchmarks.md). An interaction held elsewhere (a Python variable) keeps its object. False: YADE's order, as before; results differ by the order of summation only."))
 		((long, orderedAt, -1, (Attr::readonly | Attr::noSave), "Step at which :yref:`orderInteractions<RbsmTimeStepper.orderInteractions>` sorted the interactions (-1: not yet by this engine object; under yade.mpy the step at which it was skipped)."))
-		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bound ω² of its rows, the dashpot Σ c·A and the softer spring Σ k·A of its joints since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run).")),
+		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bound ω² of its rows, the dashpot Σ c·A and the softer spring Σ k·A of its joints since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run)."))
+		((std::vector<Real>, rowDiag, , Attr::hidden, "densityScaling: per body id, the own-block share of rowBounds' ω² (saved with it: a loaded scene keeps its scales and scales the joints it makes like the uninterrupted run).")),
 		/*ctor*/,
 		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the present joints [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
 		.def("limit", &RbsmTimeStepper::limit, "Runs a full estimate of the scene as it is now (joints, first contacts, NewtonIntegrator.damping) and returns :yref:`stableDt<RbsmTimeStepper.stableDt>` [s], the step this engine would allow; what yade_rbsm.critical_time_step() returns at safetyFactor=1.")
@@ -127,7 +128,6 @@ private:
 	std::vector<ScaledLoad>         scaledLoads;  // applyMassScale's corrections of this step
 	Vector3r                        newtonGravity     = Vector3r::Zero(); // NewtonIntegrator.gravity, read once per full estimate (densityScaling)
 	bool                            newtonGravityRead = false;
-	std::vector<Real>               rowDiag;      // per body id: the own-block share of rowBounds' ω² (densityScaling)
 	std::vector<BoundPose> boundPose; // per body id: its rotation when the collider last made its box
 };
 REGISTER_SERIALIZABLE(RbsmTimeStepper);
