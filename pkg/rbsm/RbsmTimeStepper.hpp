@@ -98,6 +98,7 @@ private:
 	void keepBoundsAhead();
 	void scaleMasses();
 	Real massScaleOf(size_t id) const;
+	void raiseMassScale(size_t id, Real s);
 	bool scalesHold(size_t nBodies);
 	void applyMassScale();
 	template <class Keep> const std::vector<const Interaction*>& jointsByIds(Keep keep);
