@@ -331,6 +331,7 @@ Real RbsmTimeStepper::firstContactEstimate() const
 			break;
 		}
 	Real top[2] = { 0, 0 }; // the two largest ω² of free blocks
+	firstOmega2.clear();
 	for (const Block& k : blocks) {
 		const State& s = *scene->bodies->body[size_t(k.id)]->state;
 		// a block with joints is bounded by them (a bonded sliver is not assumed to meet another
@@ -341,6 +342,7 @@ Real RbsmTimeStepper::firstContactEstimate() const
 		const Real partnerS = bestS[0].id != k.id ? bestS[0].value : bestS[1].value;
 		if (!std::isfinite(partnerN) || !std::isfinite(partnerS)) continue; // nothing to meet
 		const Real w2 = rbsm::stiffestJointOmega2(dynBody(s), k.poly->vertices, k.En, k.Es, partnerN, partnerS, k.poly->thickness);
+		if (w2 > 0) firstOmega2.push_back(w2);
 		if (w2 > top[0]) top[1] = top[0], top[0] = w2;
 		else if (w2 > top[1]) top[1] = w2;
 	}
@@ -374,6 +376,12 @@ void RbsmTimeStepper::scaleMasses()
 	std::vector<Real> own; // each jointed block's own stable step
 	for (size_t id = 0; id < bodies.size() && kRow * id < rowBounds.size(); id++)
 		if (rowBounds[kRow * id] > 0) own.push_back(safetyFactor * blockDt(id) / std::sqrt(1 + newtonDamping));
+	// and each free block without joints, its first contact's step: the median of the jointed blocks
+	// alone was that of the few that had landed in a pile being dropped (one block touching a wall at
+	// a corner: 0.15 s), at which the others, still falling, passed through their neighbours
+	const Real firstSafety = impactsMatter() ? impactSafety : safetyFactor;
+	for (Real w2 : firstOmega2)
+		own.push_back(firstSafety * 2 / std::sqrt(w2) / std::sqrt(1 + newtonDamping));
 	if (own.empty()) {
 		massScale.assign(bodies.size(), 1);
 		scaledDt = std::numeric_limits<Real>::infinity();

@@ -116,6 +116,7 @@ private:
 	std::vector<int>              dynIndex, dynIds;
 	std::vector<rbsm::DynContact> dynContacts;
 	std::vector<Real>             inradius; // per body id, from the last full estimate
+	mutable std::vector<Real>     firstOmega2; // firstContactEstimate's ω² of each free block without joints (for scaleMasses)
 	long                          jointsSeen = -1;
 	struct BoundPose {
 		long iter = -1; // Bound::lastUpdateIter when c, s were taken
