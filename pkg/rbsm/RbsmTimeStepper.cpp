@@ -95,6 +95,8 @@ void RbsmTimeStepper::postLoad(RbsmTimeStepper&)
 		throw std::invalid_argument("RbsmTimeStepper.safetyFactor: must be in (0, 1] (got " + std::to_string(safetyFactor) + ")");
 	if (!(impactSafety > 0 && impactSafety <= 1))
 		throw std::invalid_argument("RbsmTimeStepper.impactSafety: must be in (0, 1] (got " + std::to_string(impactSafety) + ")");
+	if (!(std::isfinite(targetDt) && targetDt >= 0))
+		throw std::invalid_argument("RbsmTimeStepper.targetDt: must be a finite step >= 0 [s] (got " + std::to_string(targetDt) + "; 0 = the median block's step)");
 	if (interval < 1) throw std::invalid_argument("RbsmTimeStepper.interval: must be >= 1 (got " + std::to_string(interval) + ")");
 	if (!(maxDt > 0)) throw std::invalid_argument("RbsmTimeStepper.maxDt: must be > 0 (got " + std::to_string(maxDt) + ")");
 	if (!(std::isfinite(maxStepMotion) && maxStepMotion >= 0))
@@ -373,6 +375,7 @@ void RbsmTimeStepper::scaleMasses()
 {
 	const auto& bodies = scene->bodies->body;
 	massScale.resize(bodies.size(), 1); // (the old scales: a rise slows its block, raiseMassScale)
+	scaledTarget = targetDt;
 	std::vector<Real> own; // each jointed block's own stable step
 	for (size_t id = 0; id < bodies.size() && kRow * id < rowBounds.size(); id++)
 		if (rowBounds[kRow * id] > 0) own.push_back(safetyFactor * blockDt(id) / std::sqrt(1 + newtonDamping));
@@ -585,6 +588,7 @@ void RbsmTimeStepper::action()
 	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: estimate now)
 	const long made = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
 	if (densityScaling != massScaled) lastCheck = -1, massScaled = densityScaling; // switched: estimate now
+	if (densityScaling && targetDt != scaledTarget) lastCheck = -1;                 // a new target: estimate now
 	if (!densityScaling) massScale.clear();
 	// once per engine object, at the first step with interactions (or after O.load: the stepper is in
 	// every RBSM engine list, old saved scenes too); not again: the objects freed by one sort would

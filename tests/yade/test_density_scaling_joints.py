@@ -254,3 +254,26 @@ report(dtmax=dtmax, vend=max(b.state.vel.norm() for b in O.bodies if b.dynamic),
 """, jobs=1)
     assert r["scaled"] > 0, r
     assert r["dtmax"] < 0.01 and r["vend"] < 1e-3, r
+
+
+def test_target_dt_is_checked_and_a_change_takes_effect_at_once():
+    """RbsmTimeStepper.targetDt took -1 and NaN silently (the median step) and inf (no scaling at all),
+    and a new value waited for the next scheduled estimate: with interval 100000, targetDt = 1e-4 s set
+    mid-run left O.dt at 2.1e-4 s. Bad values are refused (ValueError, the old value kept) and a change
+    makes a full estimate at the next step."""
+    (r,) = run_ok(SCENE + """
+refused = []
+for v in (-1.0, float("nan"), float("inf")):
+    try:
+        ts.targetDt = v
+    except ValueError:
+        refused.append(repr(v))
+advance(10)
+before = (O.dt, ts.lastCheck)
+ts.targetDt = before[0] / 2
+advance(1)
+report(refused=refused, target=ts.targetDt, before=before, dt=O.dt, last=ts.lastCheck, iter=O.iter)
+""")
+    assert r["refused"] == ["-1.0", "nan", "inf"], r
+    assert r["target"] == r["before"][0] / 2 and r["dt"] == r["target"], r
+    assert r["last"] == r["iter"] - 1 > r["before"][1], r
