@@ -7,6 +7,8 @@ made between estimates now raises the rows and the scales of its two blocks alon
 (subadditive terms): the scale a block gets then is at least the one a full estimate at that state
 gives it, and the stage stays stable.
 """
+import pytest
+
 from yaderun import run_ok
 
 SCENE = """
@@ -277,3 +279,41 @@ report(refused=refused, target=ts.targetDt, before=before, dt=O.dt, last=ts.last
     assert r["refused"] == ["-1.0", "nan", "inf"], r
     assert r["target"] == r["before"][0] / 2 and r["dt"] == r["target"], r
     assert r["last"] == r["iter"] - 1 > r["before"][1], r
+
+
+@pytest.mark.xfail(strict=True, reason="open: the Gershgorin rows leave out the stiffness of the joint forces "
+                   "(N x lever arm), which dominates a tiny block pinched under a heavy one")
+def test_a_pinched_pebble_stays_stable_under_density_scaling():
+    """40 blocks (1 cm to 1 m) dropped on a fixed base under density scaling at safetyFactor 0.8: a 1 cm
+    7-gon pinched between the base and a 0.5 m block (joint forces 1.2e4 N on 7.7 mm, overlaps of mm)
+    spins up to 845 rad/s and the run stops at step 8607. Its rotation is held by the joints' forces
+    about its centroid (N d ~ 100 N m/rad) far more than by their springs (kn L^3/12 ~ 8 N m/rad),
+    which alone bound its scale. Unscaled, or at safetyFactor 0.6, the pile rests."""
+    (r,) = run_ok("""
+import math, random
+from yade import O, wrapper
+from yade_rbsm import polygon2d, engines, time_stepper, advance
+rock = wrapper.RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5, cohesion=0, tensileStrength=0)
+O.materials.append(rock)
+O.bodies.append(polygon2d([(-6, -1), (6, -1), (6, 0), (-6, 0)], rock, fixed=True))
+O.bodies.append(polygon2d([(-6.5, 0), (-6, 0), (-6, 12), (-6.5, 12)], rock, fixed=True))
+O.bodies.append(polygon2d([(6, 0), (6.5, 0), (6.5, 12), (6, 12)], rock, fixed=True))
+rng = random.Random(4)
+for k in range(40):
+    n, R = rng.randint(3, 12), 10 ** rng.uniform(-2, 0) / 2
+    a0 = rng.uniform(0, 2 * math.pi)
+    cx, cy = -5 + 1.25 * (k % 9) + rng.uniform(-0.1, 0.1), 1 + 1.1 * (k // 9)
+    b = O.bodies.append(polygon2d([(cx + R * math.cos(a0 + 2 * math.pi * j / n), cy + R * math.sin(a0 + 2 * math.pi * j / n)) for j in range(n)], rock))
+    O.bodies[b].state.vel = (rng.uniform(-2, 2), rng.uniform(-2, 2), 0)
+    O.bodies[b].state.angVel = (0, 0, rng.uniform(-3, 3))
+O.engines = engines(gravity=(0, -9.81, 0), damping=0.7)
+ts = time_stepper()
+ts.densityScaling = True
+stopped = None
+try:
+    advance(20000)
+except RuntimeError:
+    stopped = O.iter
+report(stopped=stopped)
+""", jobs=1)
+    assert r["stopped"] is None, r
