@@ -173,11 +173,11 @@ ts.checkNextStep()
 advance(4000)
 while ts.lastCheck != O.iter - 50:  # half way between two scheduled estimates
     advance(1)
-O.save("/tmp/ds_saved.yade.gz")
+O.save("ds_saved.yade.gz")
 advance(40)
 ref = [tuple(b.state.pos) for b in O.bodies]
 ref_scale, ref_last = list(ts.massScale), ts.lastCheck
-O.load("/tmp/ds_saved.yade.gz")
+O.load("ds_saved.yade.gz")
 ts = time_stepper()
 last_saved = ts.lastCheck
 advance(1)
