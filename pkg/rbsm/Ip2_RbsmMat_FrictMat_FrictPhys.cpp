@@ -1,4 +1,5 @@
 #include <pkg/rbsm/Ip2_RbsmMat_FrictMat_FrictPhys.hpp>
+#include <pkg/rbsm/Ip2_RbsmMat_RbsmMat_RbsmPhys.hpp>
 #include <pkg/rbsm/MixedPhys.hpp>
 #include <pkg/rbsm/RbsmMat.hpp>
 #include <pkg/rbsm/StepReport.hpp>
@@ -17,7 +18,9 @@ void Ip2_RbsmMat_FrictMat_FrictPhys::go(const shared_ptr<Material>& m1, const sh
 	if (I->phys) return;
 	const rbsm_mixed::Elastic e1 = rbsm_mixed::elasticOf(*m1), e2 = rbsm_mixed::elasticOf(*m2);
 	if (const auto* g = dynamic_cast<const RbsmGeom*>(I->geom.get())) {
-		// the block (RbsmMat, body 1) on a FrictMat wall or facet
+		// the block (RbsmMat, body 1) on a FrictMat wall or facet: an RBSM joint, which RbsmTimeStepper
+		// adds to its block's rows (and density scale) at the step it is made, as the RbsmMat pair's
+		Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.fetch_add(1, std::memory_order_relaxed);
 		I->phys = rbsm_mixed::boundaryJointPhys(*g, e1, true, e2, static_cast<const RbsmMat&>(*m1).planeStrain);
 		return;
 	}

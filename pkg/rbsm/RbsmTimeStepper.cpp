@@ -95,6 +95,8 @@ void RbsmTimeStepper::postLoad(RbsmTimeStepper&)
 		throw std::invalid_argument("RbsmTimeStepper.safetyFactor: must be in (0, 1] (got " + std::to_string(safetyFactor) + ")");
 	if (!(impactSafety > 0 && impactSafety <= 1))
 		throw std::invalid_argument("RbsmTimeStepper.impactSafety: must be in (0, 1] (got " + std::to_string(impactSafety) + ")");
+	if (!(std::isfinite(targetDt) && targetDt >= 0))
+		throw std::invalid_argument("RbsmTimeStepper.targetDt: must be a finite step >= 0 [s] (got " + std::to_string(targetDt) + "; 0 = the median block's step)");
 	if (interval < 1) throw std::invalid_argument("RbsmTimeStepper.interval: must be >= 1 (got " + std::to_string(interval) + ")");
 	if (!(maxDt > 0)) throw std::invalid_argument("RbsmTimeStepper.maxDt: must be > 0 (got " + std::to_string(maxDt) + ")");
 	if (!(std::isfinite(maxStepMotion) && maxStepMotion >= 0))
@@ -271,7 +273,7 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 			}
 			if (scalesHold(bodies.size())) { // its rows grew: its scale again, at the same target
 				rowDiag[id] += diag[side];
-				massScale[id] = massScaleOf(size_t(id));
+				raiseMassScale(size_t(id), massScaleOf(size_t(id)));
 			}
 			if (!ownedHere(*bodies[id])) continue;
 			const Real dt = blockDt(size_t(id));
@@ -331,6 +333,7 @@ Real RbsmTimeStepper::firstContactEstimate() const
 			break;
 		}
 	Real top[2] = { 0, 0 }; // the two largest ω² of free blocks
+	firstOmega2.clear();
 	for (const Block& k : blocks) {
 		const State& s = *scene->bodies->body[size_t(k.id)]->state;
 		// a block with joints is bounded by them (a bonded sliver is not assumed to meet another
@@ -341,6 +344,7 @@ Real RbsmTimeStepper::firstContactEstimate() const
 		const Real partnerS = bestS[0].id != k.id ? bestS[0].value : bestS[1].value;
 		if (!std::isfinite(partnerN) || !std::isfinite(partnerS)) continue; // nothing to meet
 		const Real w2 = rbsm::stiffestJointOmega2(dynBody(s), k.poly->vertices, k.En, k.Es, partnerN, partnerS, k.poly->thickness);
+		if (w2 > 0) firstOmega2.push_back(w2);
 		if (w2 > top[0]) top[1] = top[0], top[0] = w2;
 		else if (w2 > top[1]) top[1] = w2;
 	}
@@ -370,18 +374,45 @@ void RbsmTimeStepper::fullCheck()
 void RbsmTimeStepper::scaleMasses()
 {
 	const auto& bodies = scene->bodies->body;
-	massScale.assign(bodies.size(), 1);
+	massScale.resize(bodies.size(), 1); // (the old scales: a rise slows its block, raiseMassScale)
+	scaledTarget = targetDt;
 	std::vector<Real> own; // each jointed block's own stable step
 	for (size_t id = 0; id < bodies.size() && kRow * id < rowBounds.size(); id++)
 		if (rowBounds[kRow * id] > 0) own.push_back(safetyFactor * blockDt(id) / std::sqrt(1 + newtonDamping));
+	// and each free block without joints, its first contact's step: the median of the jointed blocks
+	// alone was that of the few that had landed in a pile being dropped (one block touching a wall at
+	// a corner: 0.15 s), at which the others, still falling, passed through their neighbours
+	const Real firstSafety = impactsMatter() ? impactSafety : safetyFactor;
+	for (Real w2 : firstOmega2)
+		own.push_back(firstSafety * 2 / std::sqrt(w2) / std::sqrt(1 + newtonDamping));
 	if (own.empty()) {
+		massScale.assign(bodies.size(), 1);
 		scaledDt = std::numeric_limits<Real>::infinity();
 		return;
 	}
 	std::nth_element(own.begin(), own.begin() + own.size() / 2, own.end());
 	scaledDt = targetDt > 0 ? targetDt : own[own.size() / 2];
-	for (size_t id = 0; id < bodies.size() && kRow * id < rowBounds.size(); id++)
-		massScale[id] = massScaleOf(id);
+	for (size_t id = 0; id < bodies.size(); id++)
+		raiseMassScale(id, kRow * id < rowBounds.size() ? massScaleOf(id) : 1);
+}
+
+// Sets body id's scale to s. A rise from s0 to s slows the block's free velocities by √(s0/s), which
+// keeps its kinetic energy ½ s m v² of the scaled motion: a block keeping its velocity while it was
+// made s/s0 times heavier (a falling block scaled at its first joint) carried s/s0 times its energy
+// into its joints, and a later fall of its scale (its joints open, a full estimate) released that
+// energy, stored in a joint pressed deep, into the light block (a 3 cm block thrown at 8.8 m/s).
+void RbsmTimeStepper::raiseMassScale(size_t id, Real s)
+{
+	const Real s0 = massScale[id];
+	massScale[id] = s;
+	const auto& bodies = scene->bodies->body;
+	if (!(s > s0 && s0 > 0) || id >= bodies.size() || !bodies[id] || !bodies[id]->state) return;
+	State&     st = *bodies[id]->state;
+	const Real k  = std::sqrt(s0 / s);
+	for (int i = 0; i < 3; i++) {
+		if (!(st.blockedDOFs & (1u << i))) st.vel[i] *= k; // DOF_X, _Y, _Z (a prescribed velocity stays)
+		if (!(st.blockedDOFs & (8u << i))) st.angVel[i] *= k; // DOF_RX, _RY, _RZ
+	}
 }
 
 // The scale that lets body id's rows (rowBounds, rowDiag) run at scaledDt.
@@ -394,8 +425,8 @@ Real RbsmTimeStepper::massScaleOf(size_t id) const
 	return rbsm::densityScale(rowDiag[id], w2 - rowDiag[id], wT * wT);
 }
 
-// Density scaling with the rows of a full estimate in this process (after O.load there are none:
-// the saved scales run until the next full estimate), grown to nBodies for bodies added since.
+// Density scaling with the rows of a full estimate (saved with the scene; a file of an older build
+// has none: a full estimate then), grown to nBodies for bodies added since.
 bool RbsmTimeStepper::scalesHold(size_t nBodies)
 {
 	if (!densityScaling || !massScaled || rowDiag.empty() || !std::isfinite(scaledDt)) return false;
@@ -500,7 +531,9 @@ void RbsmTimeStepper::keepBoundsAhead()
 
 Real RbsmTimeStepper::stableDt() const
 {
-	if (densityScaling && massScaled) return scaledDt; // the blocks below it are scaled up to it
+	// the blocks below it are scaled up to it; without a jointed block (a pile dropped, scaledDt inf)
+	// the unscaled step of the first contacts, as without scaling (inf left O.dt at YADE's 1e-8)
+	if (densityScaling && massScaled && std::isfinite(scaledDt)) return scaledDt;
 	const Real firstSafety = impactsMatter() ? impactSafety : safetyFactor;
 	return std::min(safetyFactor * criticalDt, firstSafety * firstContactDt) / std::sqrt(1 + newtonDamping);
 }
@@ -555,6 +588,7 @@ void RbsmTimeStepper::action()
 	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: estimate now)
 	const long made = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
 	if (densityScaling != massScaled) lastCheck = -1, massScaled = densityScaling; // switched: estimate now
+	if (densityScaling && targetDt != scaledTarget) lastCheck = -1;                 // a new target: estimate now
 	if (!densityScaling) massScale.clear();
 	// once per engine object, at the first step with interactions (or after O.load: the stepper is in
 	// every RBSM engine list, old saved scenes too); not again: the objects freed by one sort would
@@ -562,7 +596,7 @@ void RbsmTimeStepper::action()
 	if (orderInteractions && orderedAt < 0 && orderInteractionsInMemory(*scene) != 0) orderedAt = scene->iter;
 	if (lastCheck < 0 || scene->iter < lastCheck || scene->iter - lastCheck >= interval) fullCheck();
 	// a joint made since: its rows (and scales) grow by bounds, at this step; without the rows of a
-	// full estimate in this process (a loaded scene), an estimate now
+	// full estimate (a scene saved by an older build), an estimate now
 	else if (made != jointsSeen) densityScaling && !scalesHold(scene->bodies->body.size()) ? fullCheck() : addJointsMadeThisStep();
 	jointsSeen          = made;
 	keepBoundsAhead();

@@ -69,7 +69,7 @@ public:
 		((Real, newtonDamping, 0, Attr::readonly, "NewtonIntegrator's damping as read at the last full estimate."))
 		((int, criticalBody, -1, Attr::readonly, "Id of the block whose joints limit criticalDt (-1: none)."))
 		((bool, densityScaling, false, , "Quasi-static stages only (gravity settling, strength reduction): blocks whose own stable step is below :yref:`targetDt<RbsmTimeStepper.targetDt>` get heavier inertia (massScale, their force and weight divided by it before NewtonIntegrator), so that all of them run at the target step. Equilibrium, and so a settled state or a factor of safety, is unchanged; the motion towards it is not physical (time, kinetic energy). Off for dynamics. NewtonIntegrator.densityScaling is not used (it is tied to GlobalStiffnessTimeStepper)."))
-		((Real, targetDt, 0, , "Step of the density-scaled stages [s]; 0: the stable step of the median block (the smaller blocks scaled up to it)."))
+		((Real, targetDt, 0, Attr::triggerPostLoad, "Step of the density-scaled stages [s] (finite, >= 0); 0: the stable step of the median block (the smaller blocks scaled up to it). A change takes effect at the next step (a full estimate)."))
 		((Real, scaledDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "The step density scaling runs at [s] (targetDt, or the median block's step), from the last full estimate."))
 		((std::vector<Real>, massScale, , Attr::readonly, "Per body id: the factor s ≥ 1 applied to its inertia by densityScaling (1: none; empty when off)."))
 		((bool, massScaled, false, Attr::hidden, "densityScaling as of the last step (a switch makes a full estimate at once)."))
@@ -78,7 +78,9 @@ public:
 		((Real, stepDt, std::numeric_limits<Real>::infinity(), (Attr::readonly | Attr::noSave), "The step chosen at the last run [s]: min(stableDt, maxDt, the travel limit of maxStepMotion); what setDt sets (inf: no block of this rank bounds it). Under yade.mpy the sync engine sets O.dt to its minimum over the ranks."))
 		((bool, orderInteractions, true, , "Sort the interactions by body ids, in the container and in memory (MemoryOrder.hpp), once, at the first step of this engine that has interactions (so also right after O.load). The collider makes them in sweep order and O.load interleaves them with the bodies, which made a contact-step 1.3-1.7x slower at 10^4-10^5 blocks (docs/benchmarks.md). An interaction held elsewhere (a Python variable) keeps its object. False: YADE's order, as before; results differ by the order of summation only."))
 		((long, orderedAt, -1, (Attr::readonly | Attr::noSave), "Step at which :yref:`orderInteractions<RbsmTimeStepper.orderInteractions>` sorted the interactions (-1: not yet by this engine object; under yade.mpy the step at which it was skipped)."))
-		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bound ω² of its rows, the dashpot Σ c·A and the softer spring Σ k·A of its joints since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run).")),
+		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bound ω² of its rows, the dashpot Σ c·A and the softer spring Σ k·A of its joints since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run)."))
+		((Real, scaledTarget, -1, Attr::hidden, "targetDt as of the last full estimate under densityScaling (another value makes a full estimate at once)."))
+		((std::vector<Real>, rowDiag, , Attr::hidden, "densityScaling: per body id, the own-block share of rowBounds' ω² (saved with it: a loaded scene keeps its scales and scales the joints it makes like the uninterrupted run).")),
 		/*ctor*/,
 		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the present joints [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
 		.def("limit", &RbsmTimeStepper::limit, "Runs a full estimate of the scene as it is now (joints, first contacts, NewtonIntegrator.damping) and returns :yref:`stableDt<RbsmTimeStepper.stableDt>` [s], the step this engine would allow; what yade_rbsm.critical_time_step() returns at safetyFactor=1.")
@@ -97,6 +99,7 @@ private:
 	void keepBoundsAhead();
 	void scaleMasses();
 	Real massScaleOf(size_t id) const;
+	void raiseMassScale(size_t id, Real s);
 	bool scalesHold(size_t nBodies);
 	void applyMassScale();
 	template <class Keep> const std::vector<const Interaction*>& jointsByIds(Keep keep);
@@ -114,6 +117,7 @@ private:
 	std::vector<int>              dynIndex, dynIds;
 	std::vector<rbsm::DynContact> dynContacts;
 	std::vector<Real>             inradius; // per body id, from the last full estimate
+	mutable std::vector<Real>     firstOmega2; // firstContactEstimate's ω² of each free block without joints (for scaleMasses)
 	long                          jointsSeen = -1;
 	struct BoundPose {
 		long iter = -1; // Bound::lastUpdateIter when c, s were taken
@@ -127,7 +131,6 @@ private:
 	std::vector<ScaledLoad>         scaledLoads;  // applyMassScale's corrections of this step
 	Vector3r                        newtonGravity     = Vector3r::Zero(); // NewtonIntegrator.gravity, read once per full estimate (densityScaling)
 	bool                            newtonGravityRead = false;
-	std::vector<Real>               rowDiag;      // per body id: the own-block share of rowBounds' ω² (densityScaling)
 	std::vector<BoundPose> boundPose; // per body id: its rotation when the collider last made its box
 };
 REGISTER_SERIALIZABLE(RbsmTimeStepper);

@@ -7,6 +7,8 @@ made between estimates now raises the rows and the scales of its two blocks alon
 (subadditive terms): the scale a block gets then is at least the one a full estimate at that state
 gives it, and the stage stays stable.
 """
+import pytest
+
 from yaderun import run_ok
 
 SCENE = """
@@ -90,3 +92,228 @@ report(vmax=vmax, checks=checks, scaled=sum(1 for s in ts.massScale if s > 1), i
     assert r["vmax"] < 1e-2, r
     assert r["scaled"] > 0, r
     assert r["checks"] <= 7, "estimates ran at joints made between the scheduled ones (6 scheduled): %s" % r
+
+
+def test_a_joint_on_a_frictmat_wall_made_between_estimates_scales_its_block():
+    """A block's joint on a YADE Wall of FrictMat (Ip2_RbsmMat_FrictMat_FrictPhys makes its RbsmPhys)
+    is a joint like one on an RbsmMat wall: it was not counted as made, so the stepper never added it
+    between estimates. Under density scaling the 5 cm block kept massScale 1 at the median block's
+    step (10x its own) and was thrown off the wall at 29 m/s, stopping the run."""
+    (r,) = run_ok(SCENE + """
+from yade import utils
+from yade_rbsm import mixed_engines
+steel = wrapper.FrictMat(young=1e8, poisson=0.2, density=7800, frictionAngle=0.5)
+O.materials.append(steel)
+wall = O.bodies.append(utils.wall((0, -3, 0), axis=1, material=steel))
+O.engines = mixed_engines(gravity=(0, -9.81, 0), damping=0.7)
+ts = time_stepper()
+ts.densityScaling, ts.interval = True, 100000
+drop = O.bodies.append(polygon2d([(8, -2.95), (8.05, -2.95), (8.05, -2.9), (8, -2.9)], rock))
+advance(1)  # the first step of the new engines: a full estimate
+before = ts.lastCheck
+js = []
+for k in range(20000):
+    advance(1)
+    js = [I for I in O.interactions if I.isReal and drop in (I.id1, I.id2)]
+    if js:
+        break
+assert js and wall in (js[0].id1, js[0].id2), "the block never landed on the wall"
+scale = ts.massScale[drop]
+advance(2000)
+report(before=before, last=ts.lastCheck, scale=scale, v=O.bodies[drop].state.vel.norm())
+""")
+    assert r["last"] == r["before"], r
+    assert r["scale"] > 1, "the block's joint on the wall was not added to its rows: %s" % r
+    assert r["v"] < 0.1, r
+
+
+def test_blocks_dropped_without_joints_run_at_the_first_contact_step():
+    """Density scaling on a scene without joints yet (a pile dropped on its base): the scaled step is
+    the median jointed block's, so none (scaledDt inf), and the stepper set no step at all: O.dt stayed
+    at YADE's 1e-8 s (a block 0.5 m above its base fell 2 micrometres in 20000 steps). Until the first
+    joint it is now the unscaled step of the first contacts, as without scaling."""
+    (r,) = run_ok("""
+from yade import O, wrapper
+from yade_rbsm import polygon2d, engines, time_stepper, advance
+rock = wrapper.RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5)
+O.materials.append(rock)
+O.bodies.append(polygon2d([(-2, -1), (2, -1), (2, 0), (-2, 0)], rock, fixed=True))
+b = O.bodies.append(polygon2d([(-0.2, 0.5), (0.2, 0.5), (0.2, 0.9), (-0.2, 0.9)], rock))
+O.engines = engines(gravity=(0, -9.81, 0), damping=0.7)
+ts = time_stepper()
+ts.densityScaling = True
+advance(1)
+dt0, first, scaled0 = O.dt, ts.firstContactDt, ts.scaledDt
+advance(20000)
+report(dt0=dt0, first=first, scaled0=scaled0, y=O.bodies[b].state.pos[1], v=O.bodies[b].state.vel.norm(),
+       scale=ts.massScale[b], scaledDt=ts.scaledDt)
+""")
+    assert r["first"] < float("inf"), r
+    assert abs(r["dt0"] / (r["first"] * 0.8 / 1.7 ** 0.5) - 1) < 1e-12, "no jointed block: O.dt must be the first contacts' step: %s" % r
+    assert abs(r["y"] - 0.2) < 1e-3 and r["v"] < 1e-3, "the block must land and rest on its base: %s" % r
+
+
+def test_a_loaded_density_scaled_scene_keeps_its_scales_and_schedule():
+    """O.save / O.load mid-run under density scaling: the own-block shares of the rows (rowDiag) were
+    not saved, so the first step after the load ran an unscheduled full estimate (any joint count
+    differs from a fresh engine's), scales 0.7 % off the uninterrupted run's and positions 0.5 mm
+    apart after 30 steps (30-block pile, 0.1-1 m). They are saved now: the loaded scene continues like the
+    uninterrupted run, on the same estimate steps."""
+    (r,) = run_ok(SCENE + """
+O.bodies.append(polygon2d([(-6.5, 0), (-6, 0), (-6, 12), (-6.5, 12)], rock, fixed=True))
+O.bodies.append(polygon2d([(6, 0), (6.5, 0), (6.5, 12), (6, 12)], rock, fixed=True))
+rng = random.Random(5)
+for k in range(30):
+    n, R = rng.randint(3, 8), 10 ** rng.uniform(-1, 0) / 2
+    a0 = rng.uniform(0, 2 * math.pi)
+    cx, cy = -4 + 2 * (k % 5) + rng.uniform(-0.3, 0.3), 2 + 1.1 * (k // 5)
+    O.bodies.append(polygon2d([(cx + R * math.cos(a0 + 2 * math.pi * j / n), cy + R * math.sin(a0 + 2 * math.pi * j / n)) for j in range(n)], rock))
+ts.interval = 100
+ts.checkNextStep()
+advance(4000)
+while ts.lastCheck != O.iter - 50:  # half way between two scheduled estimates
+    advance(1)
+O.save("ds_saved.yade.gz")
+advance(40)
+ref = [tuple(b.state.pos) for b in O.bodies]
+ref_scale, ref_last = list(ts.massScale), ts.lastCheck
+O.load("ds_saved.yade.gz")
+ts = time_stepper()
+last_saved = ts.lastCheck
+advance(1)
+last_1 = ts.lastCheck
+advance(39)
+d = max(max(abs(a - b) for a, b in zip(tuple(x.state.pos), r)) for x, r in zip(O.bodies, ref))
+ds = max(abs(a - b) / b for a, b in zip(ts.massScale, ref_scale))
+report(last_saved=last_saved, last_1=last_1, last=ts.lastCheck, ref_last=ref_last, d=d, ds=ds,
+       scaled=sum(1 for s in ref_scale if s > 1))
+""", jobs=1)
+    assert r["scaled"] > 0, r
+    assert r["last_1"] == r["last_saved"], "an unscheduled estimate ran right after the load: %s" % r
+    assert r["last"] == r["ref_last"], r
+    assert r["ds"] < 1e-12 and r["d"] < 1e-9, "the loaded run departs from the uninterrupted one: %s" % r
+
+
+def test_a_scale_that_rises_keeps_the_blocks_energy():
+    """A block keeping its velocity while density scaling made it s times heavier (at its first joint,
+    or a full estimate) carried s times its kinetic energy into its joints. 20 blocks of 3 to 30 cm
+    dropped on the bonded row (estimates every 100 steps): a 3 cm block scaled 235x at a joint flew on,
+    hit the base and pressed that joint deep; the next estimate found its scale back at 1.16, the joint
+    threw it at 8.8 m/s and the run stopped at step 702. A rise now slows the block's velocities by
+    sqrt(s0/s) (kinetic energy of the scaled motion kept): the pile comes to rest."""
+    (r,) = run_ok(SCENE + """
+O.bodies.append(polygon2d([(-6.5, 0), (-6, 0), (-6, 12), (-6.5, 12)], rock, fixed=True))
+O.bodies.append(polygon2d([(6, 0), (6.5, 0), (6.5, 12), (6, 12)], rock, fixed=True))
+rng = random.Random(3)
+for k in range(20):
+    n, R = rng.randint(3, 9), 10 ** rng.uniform(-1.5, -0.5) / 2
+    a0 = rng.uniform(0, 2 * math.pi)
+    cx, cy = -4.5 + 1.0 * (k % 10), 1.4 + 0.6 * (k // 10)
+    O.bodies.append(polygon2d([(cx + R * math.cos(a0 + 2 * math.pi * j / n), cy + R * math.sin(a0 + 2 * math.pi * j / n)) for j in range(n)], rock))
+ts.interval = 100
+ts.checkNextStep()
+vmax = 0
+for k in range(300):
+    advance(100)  # (raises RuntimeError when the motion check stops the run)
+    vmax = max(vmax, max(b.state.vel.norm() for b in O.bodies if b.dynamic))
+report(vmax=vmax, vend=max(b.state.vel.norm() for b in O.bodies if b.dynamic), scaled=sum(1 for s in ts.massScale if s > 1))
+""", jobs=1)
+    assert r["scaled"] > 0, r
+    assert r["vmax"] < 4 and r["vend"] < 1e-3, r
+
+
+def test_a_pile_dropped_in_a_box_of_walls_runs_at_a_step_its_falling_blocks_allow():
+    """The scaled step is the median block's: taken over the jointed blocks alone, in a pile being
+    dropped it was that of the few blocks that had landed. 40 blocks (1 cm to 1 m) dropped into a box
+    of YADE Walls: the first joint, a block touching a wall at a corner, made it 0.15 s (O.dt 0.015 s,
+    a tenth of it, the travel limit's floor), and five falling blocks moved more than half their inner
+    radius in one step: the run stopped at step 14562. The free blocks' first-contact steps now count
+    in the median; the pile comes to rest."""
+    (r,) = run_ok("""
+import math, random
+from yade import O, wrapper, utils
+from yade_rbsm import polygon2d, mixed_engines, time_stepper, advance
+rock = wrapper.RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5, cohesion=0, tensileStrength=0)
+O.materials.append(rock)
+for pos, axis in (((0, 0, 0), 1), ((-6, 0, 0), 0), ((6, 0, 0), 0)):
+    O.bodies.append(utils.wall(pos, axis=axis, material=rock))
+rng = random.Random(3)
+for k in range(40):
+    n, R = rng.randint(3, 12), 10 ** rng.uniform(-2, 0) / 2
+    a0 = rng.uniform(0, 2 * math.pi)
+    cx, cy = -5 + 1.25 * (k % 9) + rng.uniform(-0.1, 0.1), 1 + 1.1 * (k // 9)
+    b = O.bodies.append(polygon2d([(cx + R * math.cos(a0 + 2 * math.pi * j / n), cy + R * math.sin(a0 + 2 * math.pi * j / n)) for j in range(n)], rock))
+    O.bodies[b].state.vel = (rng.uniform(-2, 2), rng.uniform(-2, 2), 0)
+    O.bodies[b].state.angVel = (0, 0, rng.uniform(-3, 3))
+O.engines = mixed_engines(gravity=(0, -9.81, 0), damping=0.7)
+ts = time_stepper()
+ts.densityScaling = True
+dtmax = 0
+for k in range(600):
+    advance(100)  # (raises RuntimeError when the motion check stops the run)
+    dtmax = max(dtmax, O.dt)
+report(dtmax=dtmax, vend=max(b.state.vel.norm() for b in O.bodies if b.dynamic), scaled=sum(1 for s in ts.massScale if s > 1))
+""", jobs=1)
+    assert r["scaled"] > 0, r
+    assert r["dtmax"] < 0.01 and r["vend"] < 1e-3, r
+
+
+def test_target_dt_is_checked_and_a_change_takes_effect_at_once():
+    """RbsmTimeStepper.targetDt took -1 and NaN silently (the median step) and inf (no scaling at all),
+    and a new value waited for the next scheduled estimate: with interval 100000, targetDt = 1e-4 s set
+    mid-run left O.dt at 2.1e-4 s. Bad values are refused (ValueError, the old value kept) and a change
+    makes a full estimate at the next step."""
+    (r,) = run_ok(SCENE + """
+refused = []
+for v in (-1.0, float("nan"), float("inf")):
+    try:
+        ts.targetDt = v
+    except ValueError:
+        refused.append(repr(v))
+advance(10)
+before = (O.dt, ts.lastCheck)
+ts.targetDt = before[0] / 2
+advance(1)
+report(refused=refused, target=ts.targetDt, before=before, dt=O.dt, last=ts.lastCheck, iter=O.iter)
+""")
+    assert r["refused"] == ["-1.0", "nan", "inf"], r
+    assert r["target"] == r["before"][0] / 2 and r["dt"] == r["target"], r
+    assert r["last"] == r["iter"] - 1 > r["before"][1], r
+
+
+@pytest.mark.xfail(strict=True, reason="open: the Gershgorin rows leave out the stiffness of the joint forces "
+                   "(N x lever arm), which dominates a tiny block pinched under a heavy one")
+def test_a_pinched_pebble_stays_stable_under_density_scaling():
+    """40 blocks (1 cm to 1 m) dropped on a fixed base under density scaling at safetyFactor 0.8: a 1 cm
+    7-gon pinched between the base and a 0.5 m block (joint forces 1.2e4 N on 7.7 mm, overlaps of mm)
+    spins up to 845 rad/s and the run stops at step 8607. Its rotation is held by the joints' forces
+    about its centroid (N d ~ 100 N m/rad) far more than by their springs (kn L^3/12 ~ 8 N m/rad),
+    which alone bound its scale. Unscaled, or at safetyFactor 0.6, the pile rests."""
+    (r,) = run_ok("""
+import math, random
+from yade import O, wrapper
+from yade_rbsm import polygon2d, engines, time_stepper, advance
+rock = wrapper.RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5, cohesion=0, tensileStrength=0)
+O.materials.append(rock)
+O.bodies.append(polygon2d([(-6, -1), (6, -1), (6, 0), (-6, 0)], rock, fixed=True))
+O.bodies.append(polygon2d([(-6.5, 0), (-6, 0), (-6, 12), (-6.5, 12)], rock, fixed=True))
+O.bodies.append(polygon2d([(6, 0), (6.5, 0), (6.5, 12), (6, 12)], rock, fixed=True))
+rng = random.Random(4)
+for k in range(40):
+    n, R = rng.randint(3, 12), 10 ** rng.uniform(-2, 0) / 2
+    a0 = rng.uniform(0, 2 * math.pi)
+    cx, cy = -5 + 1.25 * (k % 9) + rng.uniform(-0.1, 0.1), 1 + 1.1 * (k // 9)
+    b = O.bodies.append(polygon2d([(cx + R * math.cos(a0 + 2 * math.pi * j / n), cy + R * math.sin(a0 + 2 * math.pi * j / n)) for j in range(n)], rock))
+    O.bodies[b].state.vel = (rng.uniform(-2, 2), rng.uniform(-2, 2), 0)
+    O.bodies[b].state.angVel = (0, 0, rng.uniform(-3, 3))
+O.engines = engines(gravity=(0, -9.81, 0), damping=0.7)
+ts = time_stepper()
+ts.densityScaling = True
+stopped = None
+try:
+    advance(20000)
+except RuntimeError:
+    stopped = O.iter
+report(stopped=stopped)
+""", jobs=1)
+    assert r["stopped"] is None, r
