@@ -286,7 +286,7 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 
 // The stiffest single joint each free block without joints can form: one of its edges in full contact
 // with the partner that adds the least compliance (the smallest inner radius over modulus of any other block).
-Real RbsmTimeStepper::firstContactEstimate() const
+Real RbsmTimeStepper::firstContactEstimate()
 {
 	struct Candidate {
 		Real value = std::numeric_limits<Real>::infinity();

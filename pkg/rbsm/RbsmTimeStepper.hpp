@@ -103,7 +103,7 @@ private:
 	bool scalesHold(size_t nBodies);
 	void applyMassScale();
 	template <class Keep> const std::vector<const Interaction*>& jointsByIds(Keep keep);
-	Real firstContactEstimate() const;
+	Real firstContactEstimate(); // (also fills firstOmega2)
 	bool jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
 	bool mayImpact(const RbsmPhys& p) const;
 	bool impactsMatter() const;
@@ -117,7 +117,7 @@ private:
 	std::vector<int>              dynIndex, dynIds;
 	std::vector<rbsm::DynContact> dynContacts;
 	std::vector<Real>             inradius; // per body id, from the last full estimate
-	mutable std::vector<Real>     firstOmega2; // firstContactEstimate's ω² of each free block without joints (for scaleMasses)
+	std::vector<Real>             firstOmega2; // firstContactEstimate's ω² of each free block without joints (for scaleMasses)
 	long                          jointsSeen = -1;
 	struct BoundPose {
 		long iter = -1; // Bound::lastUpdateIter when c, s were taken
