@@ -3,7 +3,9 @@
 # divides the joints' c_j and tan phi_j by F (--reduce joints, as --mode ductile does with the soil's), or,
 # with --reduce scaled --k K, gives the joints K x the biaxial calibration's joint_strength(c'/F, tan phi'/F)
 # (the calibrated mode's reduction of the assembly's strength, the joints made K times stronger; --cj and
-# --tanphij are then the F = 1 values and only printed). Prints the Bishop and Spencer FS and RESULT <json>.
+# --tanphij are then the F = 1 values and only printed), or, with --reduce table --table T.json, the joints that
+# give the assembly c'/F, tan phi'/F in a table of simple-shear fits (interpolated as Calibration does).
+# Prints the Bishop and Spencer FS and RESULT <json>.
 #
 #   build/yade-rbsm -j1 -n -x scripts/slope_fs_joints.py --cj 12999 --tanphij 0.2267 --spacing 1 --seed 1
 import argparse
@@ -27,7 +29,10 @@ ap = argparse.ArgumentParser()
 ap.add_argument("--slope", choices=sorted(SLOPES), default="45")
 ap.add_argument("--cj", type=float, help="joint cohesion [Pa] (--reduce joints)")
 ap.add_argument("--tanphij", type=float, help="joint tan phi (--reduce joints)")
-ap.add_argument("--reduce", choices=["joints", "scaled"], default="joints")
+ap.add_argument("--reduce", choices=["joints", "scaled", "table"], default="joints")
+ap.add_argument("--table", default="", help="--reduce table: JSON rows of simple-shear fits (tan_phi_j, c_j, "
+                "c_<key>, phi_<key> [deg]) of a grid of joints")
+ap.add_argument("--table-key", default="large", help="--reduce table: which fit, 'peak' or 'large'")
 ap.add_argument("--start", type=float, default=1.4, help="first trial F")
 ap.add_argument("--grow", type=float, default=1.2, help="trial F growth until a failure")
 ap.add_argument("--k", type=float, default=1.0, help="--reduce scaled: factor on the calibrated joint strengths")
@@ -69,6 +74,19 @@ cal = None
 if args.reduce == "scaled":
     cal = ScaledCalibration(calibrate(c, phi, young, poisson, gamma * H, density=gamma / 9.81, cache=args.cache), args.k)
     cj, tj = cal.joint_strength(c, math.tan(phi))
+elif args.reduce == "table":
+    from yade_rbsm.calibration import Calibration
+    rows = [dict(tan_phi_j=r["tan_phi_j"], c_j=r["c_j"], c_macro=r["c_" + args.table_key],
+                 phi_macro=r["phi_" + args.table_key]) for r in json.load(open(args.table))]
+    cal = Calibration(dict(cohesion=c), [r for r in rows if r["c_macro"] >= 0])
+    print("simple-shear table %s (%s): %d of %d rows" % (args.table, args.table_key, len(cal.rows), len(rows)))
+    try:
+        cj, tj = cal.joint_strength(c, math.tan(phi))
+    except ValueError as e:  # the soil itself outside the table: the gravity stage with --cj, --tanphij
+        if args.cj is None or args.tanphij is None:
+            raise
+        print("the soil is outside the table (%s); gravity stage with --cj, --tanphij" % e)
+        cj, tj = args.cj, args.tanphij
 else:
     if args.cj is None or args.tanphij is None:
         ap.error("--reduce joints needs --cj and --tanphij")
