@@ -1,0 +1,118 @@
+# Factor of safety of the 45 deg slope of scripts/slope_fs_study.py with joints given directly (issue 21,
+# simple-shear calibration): ductile joints of strength --cj [Pa], --tanphij. Strength reduction either
+# divides the joints' c_j and tan phi_j by F (--reduce joints, as --mode ductile does with the soil's), or,
+# with --reduce scaled --k K, gives the joints K x the biaxial calibration's joint_strength(c'/F, tan phi'/F)
+# (the calibrated mode's reduction of the assembly's strength, the joints made K times stronger; --cj and
+# --tanphij are then the F = 1 values and only printed), or, with --reduce table --table T.json, the joints that
+# give the assembly c'/F, tan phi'/F in a table of simple-shear fits (interpolated as Calibration does).
+# Prints the Bishop and Spencer FS and RESULT <json>.
+#
+#   build/yade-rbsm -j1 -n -x scripts/slope_fs_joints.py --cj 12999 --tanphij 0.2267 --spacing 1 --seed 1
+import argparse
+import json
+import math
+import os
+import sys
+import time
+
+from yade import O, wrapper
+
+import yade_rbsm as yr
+from yade_rbsm import limit_equilibrium as le
+from yade_rbsm import slope as sl
+from yade_rbsm.calibration import calibrate
+from yade_rbsm.strength_reduction import strength_reduction
+
+SLOPES = {"gl": dict(beta=math.degrees(math.atan(0.5)), c=10e3, phi=20.0),
+          "45": dict(beta=45.0, c=10e3, phi=40.0)}
+ap = argparse.ArgumentParser()
+ap.add_argument("--slope", choices=sorted(SLOPES), default="45")
+ap.add_argument("--cj", type=float, help="joint cohesion [Pa] (--reduce joints)")
+ap.add_argument("--tanphij", type=float, help="joint tan phi (--reduce joints)")
+ap.add_argument("--reduce", choices=["joints", "scaled", "table"], default="joints")
+ap.add_argument("--table", default="", help="--reduce table: JSON rows of simple-shear fits (tan_phi_j, c_j, "
+                "c_<key>, phi_<key> [deg]) of a grid of joints")
+ap.add_argument("--table-key", default="large", help="--reduce table: which fit, 'peak' or 'large'")
+ap.add_argument("--start", type=float, default=1.4, help="first trial F")
+ap.add_argument("--grow", type=float, default=1.2, help="trial F growth until a failure")
+ap.add_argument("--k", type=float, default=1.0, help="--reduce scaled: factor on the calibrated joint strengths")
+ap.add_argument("--spacing", type=float, default=1.0, help="Voronoi spacing [m]")
+ap.add_argument("--seed", type=int, default=1)
+ap.add_argument("--png", default="", help="path prefix of the mechanism drawings")
+ap.add_argument("--cache", default=None, help="calibration cache directory")
+ap.add_argument("--no-density-scaling", action="store_true", help="settle and reduce at the dynamic step")
+ap.add_argument("--d-fail", type=float, default=0.1, help="strength reduction's runaway displacement [m]")
+ap.add_argument("--max-steps", type=int, default=8000, help="steps of a trial (x 3 without density scaling)")
+args = ap.parse_args(sys.argv[1:])
+
+H, gamma, young, poisson = 10.0, 20e3, 100e6, 0.3
+s = SLOPES[args.slope]
+c, phi = s["c"], math.radians(s["phi"])
+L = H / math.tan(math.radians(s["beta"]))
+surface = [(0, 0), (12, 0), (12 + L, H), (32 + L, H)]
+t0 = time.time()
+
+soil = le.Slope(surface, le.Layer(c=c / 1e3, phi=s["phi"], gamma=gamma / 1e3))
+crit = le.critical_circle(soil, (5, 40), (10, 50), nx=12, ny=12, refine=3, base=0.0, r_range=(5, 60), nr=19)
+spencer = le.spencer_circle(soil, crit.circle)
+print("limit equilibrium: Bishop %.3f, Spencer %.3f on %s" % (crit.fs, spencer.fs, crit.circle))
+
+
+
+class ScaledCalibration:
+    """k x the joint strengths of a biaxial calibration (duck-types Calibration.joint_strength)."""
+
+    def __init__(self, cal, k):
+        self.cal, self.k = cal, k
+
+    def joint_strength(self, cohesion, tan_phi):
+        cj, tj = self.cal.joint_strength(cohesion, tan_phi)
+        return self.k * cj, self.k * tj
+
+
+cal = None
+if args.reduce == "scaled":
+    cal = ScaledCalibration(calibrate(c, phi, young, poisson, gamma * H, density=gamma / 9.81, cache=args.cache), args.k)
+    cj, tj = cal.joint_strength(c, math.tan(phi))
+elif args.reduce == "table":
+    from yade_rbsm.calibration import Calibration
+    rows = [dict(tan_phi_j=r["tan_phi_j"], c_j=r["c_j"], c_macro=r["c_" + args.table_key],
+                 phi_macro=r["phi_" + args.table_key]) for r in json.load(open(args.table))]
+    cal = Calibration(dict(cohesion=c), [r for r in rows if r["c_macro"] >= 0])
+    print("simple-shear table %s (%s): %d of %d rows" % (args.table, args.table_key, len(cal.rows), len(rows)))
+    try:
+        cj, tj = cal.joint_strength(c, math.tan(phi))
+    except ValueError as e:  # the soil itself outside the table: the gravity stage with --cj, --tanphij
+        if args.cj is None or args.tanphij is None:
+            raise
+        print("the soil is outside the table (%s); gravity stage with --cj, --tanphij" % e)
+        cj, tj = args.cj, args.tanphij
+else:
+    if args.cj is None or args.tanphij is None:
+        ap.error("--reduce joints needs --cj and --tanphij")
+    cj, tj = args.cj, args.tanphij
+print("joints (F = 1): c_j = %.5g Pa, tan phi_j = %.5f (phi_j = %.2f deg), reduce %s, k %g"
+      % (cj, tj, math.degrees(math.atan(tj)), args.reduce, args.k))
+mat = wrapper.RbsmMat(young=young, poisson=poisson, density=gamma / 9.81, frictionAngle=math.atan(tj), cohesion=cj,
+                      tensileStrength=c / math.tan(phi), ductile=True)
+O.materials.append(mat)
+sb = sl.voronoi_slope_blocks(surface, 0.0, spacing=args.spacing, seed=args.seed, min_distance=0.5 * args.spacing)
+sl.build_scene(sb, mat)
+O.engines = yr.engines(set_dt=True, enlarge=0.01)
+O.dt = 1e-6
+nj, _ = sl.bond_and_break(sb)
+ds = not args.no_density_scaling
+ok, steps, ratio = sl.settle(tol=1e-4, max_steps=50000, check=200, density_scaling=ds)
+broken = sum(1 for I in O.interactions if I.isReal and I.phys.nIntact < len(I.phys.intactPoints))
+print("%d blocks, %d joints; gravity stage %s after %d steps, %d joints broken" % (len(sb.free), nj,
+      "converged" if ok else "NOT converged", steps, broken))
+# unscaled, the step is about 3 x shorter: the same simulated time per trial takes 3 x the steps
+r = strength_reduction(start=args.start, grow=args.grow, rtol=0.02, density_scaling=ds,
+                       max_steps=args.max_steps if ds else 3 * args.max_steps, check=200, d_fail=args.d_fail,
+                       calibration=cal, soil=(c, phi) if cal else None, png=args.png or None)
+wall = time.time() - t0
+print("%s; %.0f s wall" % (r, wall))
+print("RESULT " + json.dumps(dict(slope=args.slope, reduce=args.reduce, k=args.k, cj=cj, tanphij=tj, spacing=args.spacing, seed=args.seed,
+                                  blocks=len(sb.free), fs=r.fs, lo=r.lo, hi=r.hi, bishop=crit.fs, spencer=spencer.fs,
+                                  broken=broken, joints=nj, wall=wall, density_scaling=ds, settle_steps=steps,
+                                  sr_steps=sum(t.steps for t in r.trials))))
