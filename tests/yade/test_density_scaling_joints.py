@@ -7,7 +7,6 @@ made between estimates now raises the rows and the scales of its two blocks alon
 (subadditive terms): the scale a block gets then is at least the one a full estimate at that state
 gives it, and the stage stays stable.
 """
-import pytest
 
 from yaderun import run_ok
 
@@ -281,39 +280,48 @@ report(refused=refused, target=ts.targetDt, before=before, dt=O.dt, last=ts.last
     assert r["last"] == r["iter"] - 1 > r["before"][1], r
 
 
-@pytest.mark.xfail(strict=True, reason="open: the Gershgorin rows leave out the stiffness of the joint forces "
-                   "(N x lever arm), which dominates a tiny block pinched under a heavy one")
-def test_a_pinched_pebble_stays_stable_under_density_scaling():
-    """40 blocks (1 cm to 1 m) dropped on a fixed base under density scaling at safetyFactor 0.8: a 1 cm
-    7-gon pinched between the base and a 0.5 m block (joint forces 1.2e4 N on 7.7 mm, overlaps of mm)
-    spins up to 845 rad/s and the run stops at step 8607. Its rotation is held by the joints' forces
-    about its centroid (N d ~ 100 N m/rad) far more than by their springs (kn L^3/12 ~ 8 N m/rad),
-    which alone bound its scale. Unscaled, or at safetyFactor 0.6, the pile rests."""
+def test_random_piles_of_blocks_from_1_cm_to_1_m_run_under_density_scaling():
+    """40 random convex blocks (1 cm to 1 m, random velocities and spins) dropped in a box of fixed blocks
+    or of YADE Walls, six seeds each, under density scaling at safetyFactor 0.8: no run may be stopped by
+    the motion check. With every rise of a scale slowing its block, also at the full estimates, 4 of
+    these 12 runs stopped (a 1 cm 7-gon pinched under a 0.5 m block spun up to 845 rad/s, seed 4): the
+    scales of blocks in contact go up and down at each estimate and the slowing acted as an energy pump
+    against the joints pressed meanwhile. Only the rise at a joint's making slows a block now. Still open:
+    the rows leave out the stiffness of the joint forces themselves (N x lever arm), which dominates a
+    tiny block pinched under a heavy one; safetyFactor 0.6 leaves margin for it."""
     (r,) = run_ok("""
 import math, random
-from yade import O, wrapper
-from yade_rbsm import polygon2d, engines, time_stepper, advance
-rock = wrapper.RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5, cohesion=0, tensileStrength=0)
-O.materials.append(rock)
-O.bodies.append(polygon2d([(-6, -1), (6, -1), (6, 0), (-6, 0)], rock, fixed=True))
-O.bodies.append(polygon2d([(-6.5, 0), (-6, 0), (-6, 12), (-6.5, 12)], rock, fixed=True))
-O.bodies.append(polygon2d([(6, 0), (6.5, 0), (6.5, 12), (6, 12)], rock, fixed=True))
-rng = random.Random(4)
-for k in range(40):
-    n, R = rng.randint(3, 12), 10 ** rng.uniform(-2, 0) / 2
-    a0 = rng.uniform(0, 2 * math.pi)
-    cx, cy = -5 + 1.25 * (k % 9) + rng.uniform(-0.1, 0.1), 1 + 1.1 * (k // 9)
-    b = O.bodies.append(polygon2d([(cx + R * math.cos(a0 + 2 * math.pi * j / n), cy + R * math.sin(a0 + 2 * math.pi * j / n)) for j in range(n)], rock))
-    O.bodies[b].state.vel = (rng.uniform(-2, 2), rng.uniform(-2, 2), 0)
-    O.bodies[b].state.angVel = (0, 0, rng.uniform(-3, 3))
-O.engines = engines(gravity=(0, -9.81, 0), damping=0.7)
-ts = time_stepper()
-ts.densityScaling = True
-stopped = None
-try:
-    advance(20000)
-except RuntimeError:
-    stopped = O.iter
-report(stopped=stopped)
+from yade import O, wrapper, utils
+from yade_rbsm import polygon2d, engines, mixed_engines, time_stepper, advance
+out = []
+for walls in (False, True):
+    for seed in range(1, 7):
+        O.reset()
+        rock = wrapper.RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5, cohesion=0, tensileStrength=0)
+        O.materials.append(rock)
+        if walls:
+            O.bodies.append([utils.wall((0, 0, 0), axis=1, material=rock), utils.wall((-6, 0, 0), axis=0, material=rock),
+                             utils.wall((6, 0, 0), axis=0, material=rock)])
+        else:
+            O.bodies.append([polygon2d([(-6, -1), (6, -1), (6, 0), (-6, 0)], rock, fixed=True),
+                             polygon2d([(-6.5, 0), (-6, 0), (-6, 12), (-6.5, 12)], rock, fixed=True),
+                             polygon2d([(6, 0), (6.5, 0), (6.5, 12), (6, 12)], rock, fixed=True)])
+        rng = random.Random(seed)
+        for k in range(40):
+            n, R = rng.randint(3, 12), 10 ** rng.uniform(-2, 0) / 2
+            a0 = rng.uniform(0, 2 * math.pi)
+            cx, cy = -5 + 1.25 * (k % 9) + rng.uniform(-0.1, 0.1), 1 + 1.1 * (k // 9)
+            b = O.bodies.append(polygon2d([(cx + R * math.cos(a0 + 2 * math.pi * j / n), cy + R * math.sin(a0 + 2 * math.pi * j / n))
+                                           for j in range(n)], rock))
+            O.bodies[b].state.vel = (rng.uniform(-2, 2), rng.uniform(-2, 2), 0)
+            O.bodies[b].state.angVel = (0, 0, rng.uniform(-3, 3))
+        O.engines = (mixed_engines if walls else engines)(gravity=(0, -9.81, 0), damping=0.7)
+        time_stepper().densityScaling = True
+        try:
+            advance(20000)
+            out.append(None)
+        except RuntimeError as e:
+            out.append("%s seed %d stopped at step %d" % ("walls" if walls else "base", seed, O.iter))
+report(stopped=[x for x in out if x], runs=len(out))
 """, jobs=1)
-    assert r["stopped"] is None, r
+    assert r["runs"] == 12 and r["stopped"] == [], r
