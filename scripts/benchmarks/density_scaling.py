@@ -2,14 +2,14 @@
 """Settling plus strength reduction of a Voronoi slope with and without density scaling (issue 22).
 
     build/yade-rbsm -j1 -n -x scripts/benchmarks/density_scaling.py [--spacing 0.5] [--min-distance 0]
-                                                                   [--seed 1] [--rtol 0.01]
+                                                                   [--seed 1] [--rtol 0.01] [--trials]
 
 Griffiths & Lane's 2:1 slope (H = 10 m, c' = 10 kPa, phi' = 20 deg, E = 100 MPa, brittle joints; the scene
 of scripts/slope_fs_study.py --mode raw), cut by ``voronoi_slope_blocks`` at *spacing* with the builder's
 *min_distance* (0, its default: Poisson sites, blocks of many sizes; 0.5: sites at least half a spacing
 apart, blocks of similar size). Each mode runs in its own process: ``settle(tol=1e-4)`` then
 ``strength_reduction(start=1.4, grow=1.2, rtol)``, a trial's max_steps 8000 scaled, 24000 plain (the same
-simulated time at a 3x shorter step). Prints one line per mode and the ratios.
+simulated time at a 3x shorter step). Prints one line per mode and the ratios (--trials: every trial too).
 """
 import json
 import math
@@ -47,6 +47,8 @@ def child(scaled, spacing, min_distance, seed, rtol):
     r = strength_reduction(start=1.4, grow=1.2, rtol=rtol, density_scaling=scaled, max_steps=8000 if scaled else 24000,
                            check=200, d_fail=0.1, verbose=False)
     t2 = time.time()
+    for t in r.trials:
+        print("TRIAL %s: %s" % ("scaled" if scaled else "plain", t), flush=True)
     print(MARK + json.dumps(dict(scaled=scaled, blocks=len(sb.free), dt=dt, settled=ok, settle_steps=settle_steps,
                                  settle_wall=t1 - t0, sr_steps=sum(t.steps for t in r.trials), trials=len(r.trials),
                                  sr_wall=t2 - t1, fs=r.fs, lo=r.lo, hi=r.hi)), flush=True)
@@ -66,6 +68,8 @@ def main():
         if not lines:
             sys.exit("density_scaling.py: the %s run printed no result:\n%s" % ("scaled" if scaled else "plain", out[-3000:]))
         rows[scaled] = json.loads(lines[0][len(MARK):])
+        if "--trials" in sys.argv:
+            print("\n".join(l for l in out.splitlines() if l.startswith("TRIAL ")))
     print("| density scaling | blocks | O.dt [s] | settle steps | SR steps (trials) | FS [bracket] | settle + SR wall [s] |")
     print("|---|---|---|---|---|---|---|")
     for scaled, r in rows.items():
