@@ -1,7 +1,7 @@
 # Table of simple-shear strengths of a 24 x 6 Voronoi sample (seed 1, 1 m cells) for a grid of ductile joints
 # (phi_j 2-22 deg x c_j 0-20 kPa; sigma_n 50 / 100 / 150 kPa; tensile strength 11.9 kPa, E 100 MPa): the peak
 # and the 6-8 % H (large) tau fitted by tau = c + sigma_n tan phi. Written to simple_shear_table.json, read by
-# scripts/slope_fs_joints.py --reduce table. About 11 minutes (90 tests).
+# scripts/slope_fs_study.py --mode table. About 11 minutes (90 tests).
 #
 #   build/yade-rbsm -j1 -n -x scripts/simple_shear_table.py
 import math, json, sys, time

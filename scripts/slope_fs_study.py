@@ -2,12 +2,16 @@
 # (issue 21, docs/slope_factor_of_safety.md). A slope H = 10 m on a firm base at toe level:
 #   --slope gl   Griffiths & Lane (1999) example 1: 2:1 face, c' = 10 kPa, phi' = 20 deg (charts: FS 1.380)
 #   --slope 45   45 deg face, c' = 10 kPa, phi' = 40 deg
-# Joints: --mode raw (the soil's c', phi', brittle: Kawai's joints), ductile (the soil's, ductile) or
-# calibrated (yade_rbsm.calibration: the joint strength that gives the assembly c', phi' at its peak;
-# strength reduction of the assembly's strength). Prints the Bishop and Spencer FS of the critical
-# circle, the RBSM FS with its bracket, and RESULT <json>.
+# Joints: --mode raw (the soil's c', phi', brittle: Kawai's joints), ductile (the soil's, ductile),
+# calibrated (yade_rbsm.calibration: the joint strength that gives the assembly c', phi' at its biaxial
+# peak, times --k; strength reduction of the assembly's strength), joints (ductile joints of strength
+# --cj [Pa], --tanphij, divided by F), or table (--table T.json: the joints that give the assembly c'/F,
+# tan phi'/F in a table of simple-shear fits, scripts/simple_shear_table.py, interpolated as Calibration
+# does). Prints the Bishop and Spencer FS of the critical circle, the RBSM FS with its bracket, and
+# RESULT <json>.
 #
 #   build/yade-rbsm -n -x scripts/slope_fs_study.py --slope 45 --mode calibrated --spacing 1 --seed 1
+#   build/yade-rbsm -j1 -n -x scripts/slope_fs_study.py --slope 45 --mode joints --cj 12999 --tanphij 0.2267
 import argparse
 import json
 import math
@@ -27,7 +31,15 @@ SLOPES = {"gl": dict(beta=math.degrees(math.atan(0.5)), c=10e3, phi=20.0),
           "45": dict(beta=45.0, c=10e3, phi=40.0)}
 ap = argparse.ArgumentParser()
 ap.add_argument("--slope", choices=sorted(SLOPES), default="gl")
-ap.add_argument("--mode", choices=["raw", "ductile", "calibrated"], default="raw")
+ap.add_argument("--mode", choices=["raw", "ductile", "calibrated", "joints", "table"], default="raw")
+ap.add_argument("--k", type=float, default=1.0, help="--mode calibrated: factor on the calibrated joint strengths")
+ap.add_argument("--cj", type=float, help="joint cohesion [Pa] (--mode joints; --mode table: if the soil is outside it)")
+ap.add_argument("--tanphij", type=float, help="joint tan phi (--mode joints; --mode table: as --cj)")
+ap.add_argument("--table", default="", help="--mode table: JSON rows of simple-shear fits (tan_phi_j, c_j, c_<key>, "
+                "phi_<key> [deg]) of a grid of joints")
+ap.add_argument("--table-key", default="large", help="--mode table: which fit, 'peak' or 'large'")
+ap.add_argument("--start", type=float, default=1.4, help="first trial F")
+ap.add_argument("--grow", type=float, default=1.2, help="trial F growth until a failure")
 ap.add_argument("--spacing", type=float, default=1.0, help="Voronoi spacing [m]")
 ap.add_argument("--seed", type=int, default=1)
 ap.add_argument("--png", default="", help="path prefix of the mechanism drawings")
@@ -49,12 +61,45 @@ crit = le.critical_circle(soil, (5, 40), (10, 50), nx=12, ny=12, refine=3, base=
 spencer = le.spencer_circle(soil, crit.circle)
 print("limit equilibrium: Bishop %.3f, Spencer %.3f on %s" % (crit.fs, spencer.fs, crit.circle))
 
+
+
+class ScaledCalibration:
+    """k x the joint strengths of a calibration (what Calibration.joint_strength gives, scaled)."""
+
+    def __init__(self, cal, k):
+        self.cal, self.k = cal, k
+
+    def joint_strength(self, cohesion, tan_phi):
+        cj, tj = self.cal.joint_strength(cohesion, tan_phi)
+        return self.k * cj, self.k * tj
+
+
 cal = None
 cj, tj = c, math.tan(phi)
 if args.mode == "calibrated":
     cal = calibrate(c, phi, young, poisson, gamma * H, density=gamma / 9.81, cache=args.cache)
+    if args.k != 1:
+        cal = ScaledCalibration(cal, args.k)
     cj, tj = cal.joint_strength(c, math.tan(phi))
-    print("calibrated joints: c_j = %.4g Pa, phi_j = %.2f deg" % (cj, math.degrees(math.atan(tj))))
+    print("calibrated joints (k = %g): c_j = %.4g Pa, phi_j = %.2f deg" % (args.k, cj, math.degrees(math.atan(tj))))
+elif args.mode == "table":
+    from yade_rbsm.calibration import Calibration
+    rows = [dict(tan_phi_j=r["tan_phi_j"], c_j=r["c_j"], c_macro=r["c_" + args.table_key],
+                 phi_macro=r["phi_" + args.table_key]) for r in json.load(open(args.table))]
+    cal = Calibration(dict(cohesion=c), [r for r in rows if r["c_macro"] >= 0])
+    print("simple-shear table %s (%s): %d of %d rows" % (args.table, args.table_key, len(cal.rows), len(rows)))
+    try:
+        cj, tj = cal.joint_strength(c, math.tan(phi))
+    except ValueError as e:  # the soil itself outside the table: the gravity stage with --cj, --tanphij
+        if args.cj is None or args.tanphij is None:
+            raise
+        print("the soil is outside the table (%s); gravity stage with --cj, --tanphij" % e)
+        cj, tj = args.cj, args.tanphij
+elif args.mode == "joints":
+    if args.cj is None or args.tanphij is None:
+        ap.error("--mode joints needs --cj and --tanphij")
+    cj, tj = args.cj, args.tanphij
+    print("joints: c_j = %.5g Pa, tan phi_j = %.5f (phi_j = %.2f deg)" % (cj, tj, math.degrees(math.atan(tj))))
 mat = wrapper.RbsmMat(young=young, poisson=poisson, density=gamma / 9.81, frictionAngle=math.atan(tj), cohesion=cj,
                       tensileStrength=c / math.tan(phi), ductile=args.mode != "raw")
 O.materials.append(mat)
@@ -69,12 +114,13 @@ broken = sum(1 for I in O.interactions if I.isReal and I.phys.nIntact < len(I.ph
 print("%d blocks, %d joints; gravity stage %s after %d steps, %d joints broken" % (len(sb.free), nj,
       "converged" if ok else "NOT converged", steps, broken))
 # unscaled, the step is about 3 x shorter: the same simulated time per trial takes 3 x the steps
-r = strength_reduction(start=1.4, grow=1.2, rtol=0.02, density_scaling=ds,
+r = strength_reduction(start=args.start, grow=args.grow, rtol=0.02, density_scaling=ds,
                        max_steps=args.max_steps if ds else 3 * args.max_steps, check=200, d_fail=args.d_fail,
                        calibration=cal, soil=(c, phi) if cal else None, png=args.png or None)
 wall = time.time() - t0
 print("%s; %.0f s wall" % (r, wall))
-print("RESULT " + json.dumps(dict(slope=args.slope, mode=args.mode, spacing=args.spacing, seed=args.seed,
+print("RESULT " + json.dumps(dict(slope=args.slope, mode=args.mode, k=args.k, cj=cj, tanphij=tj, spacing=args.spacing,
+                                  seed=args.seed,
                                   blocks=len(sb.free), fs=r.fs, lo=r.lo, hi=r.hi, bishop=crit.fs, spencer=spencer.fs,
                                   broken=broken, joints=nj, wall=wall, density_scaling=ds, settle_steps=steps,
                                   sr_steps=sum(t.steps for t in r.trials))))
