@@ -101,6 +101,58 @@ def _side_loads(verts, pos, p, w, tol, thickness):
     return fx, mz
 
 
+def _sample(W, H, side_pressure, top_force, young, poisson, density, joint_cohesion, joint_tan_phi, tensile_strength,
+            ductile, spacing, seed, min_distance, thickness):
+    """The scene of the virtual tests, reset: a W x H Voronoi sample (cells of *spacing*) between a fixed
+    bottom platen and a top platen free to move vertically only and pushed down by *top_force*, the
+    *side_pressure* on the blocks that form its sides (permanent forces), the joints made intact (rough
+    platens). Returns (ids of the blocks, id of the bottom platen, id of the top one)."""
+    from yade import O, Vector3, wrapper
+    from .blocks import polygon2d
+    from .scene import advance, engines
+    from .voronoi import voronoi_tessellation
+    from . import omega
+    O.resetThisScene()
+    mat = wrapper.RbsmMat(young=young, poisson=poisson, density=density, frictionAngle=math.atan(joint_tan_phi),
+                          cohesion=joint_cohesion, tensileStrength=tensile_strength, ductile=bool(ductile))
+    O.materials.append(mat)
+    t = voronoi_tessellation(_rectangle(W, H), spacing=spacing, seed=seed, min_distance=min_distance * spacing)
+    ids = O.bodies.append([polygon2d(v, mat, thickness=thickness) for v in t.blocks])
+    e = spacing
+    bottom = O.bodies.append(polygon2d([(-e, -e), (W + e, -e), (W + e, 0), (-e, 0)], mat, thickness=thickness,
+                                       fixed=True))
+    top = O.bodies.append(polygon2d([(-e, H), (W + e, H), (W + e, H + e), (-e, H + e)], mat, thickness=thickness))
+    O.bodies[top].state.blockedDOFs = "xzXYZ"
+    if side_pressure > 0:
+        tol = 1e-9 * H
+        for i, v in zip(ids, t.blocks):
+            fx, mz = _side_loads(v, O.bodies[i].state.pos, side_pressure, W, tol, thickness)
+            if fx != 0 or mz != 0:
+                O.forces.setPermF(i, Vector3(fx, 0, 0))
+                O.forces.setPermT(i, Vector3(0, 0, mz))
+    O.forces.setPermF(top, Vector3(0, -top_force, 0))
+    O.engines = engines(gravity=(0, 0, 0), damping=0.7, set_dt=True, enlarge=0.01)
+    O.dt = 1e-9
+    omega.ip2(O).setCohesionNow = True  # rough platens, intact joints
+    advance(1)
+    omega.ip2(O).setCohesionNow = False
+    return ids, bottom, top
+
+
+def _consolidate(platen, H):
+    """Runs until the top platen (its State) stops (at most 20000 steps); returns the steps run."""
+    from .scene import advance
+    y_prev, steps = platen.pos[1], 0
+    for _ in range(100):
+        advance(200)
+        steps += 200
+        y = platen.pos[1]
+        if abs(y - y_prev) < 1e-7 * H:
+            break
+        y_prev = y
+    return steps
+
+
 def biaxial_test(sigma3, joint_cohesion, joint_tan_phi, young, poisson, spacing=1.0, seed=1, width_blocks=8,
                  aspect=2.0, min_distance=0.5, tensile_strength=None, density=2000.0, strain_per_step=1e-6,
                  max_strain=0.03, drop=0.85, thickness=1.0, ductile=True, residual=False):
@@ -112,11 +164,8 @@ def biaxial_test(sigma3, joint_cohesion, joint_tan_phi, young, poisson, spacing=
     (the strength after the interlocking is lost). The side pressure acts horizontally on the
     blocks that form the sides at the start (permanent forces: a membrane that follows them), the
     platens are rough (bonded), the top one is driven at *strain_per_step* of the height per step."""
-    from yade import O, Vector3, wrapper
-    from .blocks import polygon2d
-    from .scene import advance, engines
-    from .voronoi import voronoi_tessellation
-    from . import omega
+    from yade import O, Vector3
+    from .scene import advance
     who = "biaxial_test"
     sigma3 = number(who, "sigma3", sigma3, 0)
     joint_cohesion = number(who, "joint_cohesion", joint_cohesion, 0)
@@ -128,40 +177,11 @@ def biaxial_test(sigma3, joint_cohesion, joint_tan_phi, young, poisson, spacing=
     if tensile_strength is None:
         tensile_strength = joint_cohesion / joint_tan_phi
     w0 = time.time()
-    O.resetThisScene()
-    mat = wrapper.RbsmMat(young=young, poisson=poisson, density=density, frictionAngle=math.atan(joint_tan_phi),
-                          cohesion=joint_cohesion, tensileStrength=tensile_strength, ductile=bool(ductile))
-    O.materials.append(mat)
     W = width_blocks * spacing
     H = aspect * W
-    t = voronoi_tessellation(_rectangle(W, H), spacing=spacing, seed=seed, min_distance=min_distance * spacing)
-    ids = O.bodies.append([polygon2d(v, mat, thickness=thickness) for v in t.blocks])
-    e = spacing
-    O.bodies.append(polygon2d([(-e, -e), (W + e, -e), (W + e, 0), (-e, 0)], mat, thickness=thickness, fixed=True))
-    top = O.bodies.append(polygon2d([(-e, H), (W + e, H), (W + e, H + e), (-e, H + e)], mat, thickness=thickness))
-    O.bodies[top].state.blockedDOFs = "xzXYZ"  # the top platen moves vertically only
-    tol = 1e-9 * H
-    for i, v in zip(ids, t.blocks):
-        fx, mz = _side_loads(v, O.bodies[i].state.pos, sigma3, W, tol, thickness)
-        if fx != 0 or mz != 0:
-            O.forces.setPermF(i, Vector3(fx, 0, 0))
-            O.forces.setPermT(i, Vector3(0, 0, mz))
-    O.forces.setPermF(top, Vector3(0, -sigma3 * W * thickness, 0))
-    O.engines = engines(gravity=(0, 0, 0), damping=0.7, set_dt=True, enlarge=0.01)
-    O.dt = 1e-9
-    omega.ip2(O).setCohesionNow = True  # rough platens, intact joints
-    advance(1)
-    omega.ip2(O).setCohesionNow = False
-    # isotropic stage: until the top platen stops
-    y_prev = O.bodies[top].state.pos[1]
-    steps = 1
-    for _ in range(100):
-        advance(200)
-        steps += 200
-        y = O.bodies[top].state.pos[1]
-        if abs(y - y_prev) < 1e-7 * H:
-            break
-        y_prev = y
+    ids, _, top = _sample(W, H, sigma3, sigma3 * W * thickness, young, poisson, density, joint_cohesion, joint_tan_phi,
+                          tensile_strength, ductile, spacing, seed, min_distance, thickness)
+    steps = 1 + _consolidate(O.bodies[top].state, H)  # isotropic stage
     # axial stage: the top platen driven down at a constant strain rate
     O.forces.setPermF(top, Vector3(0, 0, 0))
     st = O.bodies[top].state
@@ -238,11 +258,8 @@ def simple_shear_test(sigma_n, joint_cohesion, joint_tan_phi, young, poisson, sp
     length of 4 heights keeps their effect small, but they are unconfined. Returns a
     :class:`ShearResult` (peak tau, and *large*: the mean tau over the last quarter of the
     displacement range). *tensile_strength* of the joints defaults to c_j / tan phi_j."""
-    from yade import O, Vector3, wrapper
-    from .blocks import polygon2d
-    from .scene import advance, engines
-    from .voronoi import voronoi_tessellation
-    from . import omega
+    from yade import O, Vector3
+    from .scene import advance
     who = "simple_shear_test"
     sigma_n = number(who, "sigma_n", sigma_n, 0, low_open=True)
     joint_cohesion = number(who, "joint_cohesion", joint_cohesion, 0)
@@ -257,49 +274,19 @@ def simple_shear_test(sigma_n, joint_cohesion, joint_tan_phi, young, poisson, sp
     if tensile_strength is None:
         tensile_strength = joint_cohesion / joint_tan_phi
     w0 = time.time()
-    O.resetThisScene()
-    mat = wrapper.RbsmMat(young=young, poisson=poisson, density=density, frictionAngle=math.atan(joint_tan_phi),
-                          cohesion=joint_cohesion, tensileStrength=tensile_strength, ductile=bool(ductile))
-    O.materials.append(mat)
     L = length_blocks * spacing
     H = height_blocks * spacing
-    t = voronoi_tessellation(_rectangle(L, H), spacing=spacing, seed=seed, min_distance=min_distance * spacing)
-    ids = O.bodies.append([polygon2d(v, mat, thickness=thickness) for v in t.blocks])
-    e = spacing
-    bottom = O.bodies.append(polygon2d([(-e, -e), (L + e, -e), (L + e, 0), (-e, 0)], mat, thickness=thickness,
-                                       fixed=True))
-    top = O.bodies.append(polygon2d([(-e, H), (L + e, H), (L + e, H + e), (-e, H + e)], mat, thickness=thickness))
-    st = O.bodies[top].state
-    st.blockedDOFs = "xzXYZ"  # the top platen: vertical motion free, horizontal imposed
-    if end_pressure > 0:
-        tol = 1e-9 * L
-        for i, v in zip(ids, t.blocks):
-            fx, mz = _side_loads(v, O.bodies[i].state.pos, end_pressure, L, tol, thickness)
-            if fx != 0 or mz != 0:
-                O.forces.setPermF(i, Vector3(fx, 0, 0))
-                O.forces.setPermT(i, Vector3(0, 0, mz))
     area = L * thickness
-    O.forces.setPermF(top, Vector3(0, -sigma_n * area, 0))
-    O.engines = engines(gravity=(0, 0, 0), damping=0.7, set_dt=True, enlarge=0.01)
-    O.dt = 1e-9
-    omega.ip2(O).setCohesionNow = True  # intact joints
-    advance(1)
-    omega.ip2(O).setCohesionNow = False
+    ids, bottom, top = _sample(L, H, end_pressure, sigma_n * area, young, poisson, density, joint_cohesion, joint_tan_phi,
+                               tensile_strength, ductile, spacing, seed, min_distance, thickness)
+    st = O.bodies[top].state
     # glued platens: the block-platen joints would otherwise have the joints' strength, and a straight
     # interface with no interlocking is where the sample would slip (tau ~ c_j + sigma_n tan phi_j)
     glue = 1e3 * max(sigma_n, joint_cohesion, tensile_strength)
     for I in O.interactions:
         if I.isReal and (I.id1 in (bottom, top) or I.id2 in (bottom, top)):
             I.phys.cohesion, I.phys.tanPhi, I.phys.tensileStrength = glue, 10.0, glue
-    y_prev = st.pos[1]
-    steps = 1
-    for _ in range(100):  # consolidation: until the top platen stops
-        advance(200)
-        steps += 200
-        y = st.pos[1]
-        if abs(y - y_prev) < 1e-7 * H:
-            break
-        y_prev = y
+    steps = 1 + _consolidate(st, H)
     x0, y0 = st.pos[0], st.pos[1]
     peak, d_peak = -math.inf, 0.0
     peak_mid, sig_mid_peak = -math.inf, math.nan
