@@ -61,18 +61,23 @@ class BiaxialResult:
     residual: Optional[float] = None  # mean sigma1 over the last quarter of the strain range (residual=True)
 
 
+def _line(x, y, who, pairs, xs):
+    """Least-squares line y = a x + b: (a, b). ValueError for fewer than two pairs or equal x."""
+    n = len(x)
+    if n < 2 or len(y) != n:
+        raise ValueError("%s: need at least two %s" % (who, pairs))
+    mx, my = sum(x) / n, sum(y) / n
+    sxx = sum((v - mx) ** 2 for v in x)
+    if sxx <= 0:
+        raise ValueError("%s: the %s must differ" % (who, xs))
+    a = sum((u - mx) * (v - my) for u, v in zip(x, y)) / sxx
+    return a, my - a * mx
+
+
 def fit_mohr_coulomb(sigma3, sigma1):
     """Least-squares line sigma1 = Kp sigma3 + q through the peaks; returns (c, phi [rad], Kp, q,
     largest relative misfit of sigma1). ValueError for fewer than two confinements or Kp <= 1."""
-    n = len(sigma3)
-    if n < 2 or len(sigma1) != n:
-        raise ValueError("fit_mohr_coulomb: need at least two (sigma3, sigma1) pairs")
-    mx, my = sum(sigma3) / n, sum(sigma1) / n
-    sxx = sum((x - mx) ** 2 for x in sigma3)
-    if sxx <= 0:
-        raise ValueError("fit_mohr_coulomb: the confinements must differ")
-    kp = sum((x - mx) * (y - my) for x, y in zip(sigma3, sigma1)) / sxx
-    q = my - kp * mx
+    kp, q = _line(sigma3, sigma1, "fit_mohr_coulomb", "(sigma3, sigma1) pairs", "confinements")
     if not kp > 1:
         raise ValueError("fit_mohr_coulomb: slope Kp = %.4g <= 1 (no friction), peaks %r" % (kp, list(sigma1)))
     phi = math.asin((kp - 1) / (kp + 1))
@@ -231,15 +236,8 @@ class ShearResult:
 def fit_coulomb(sigma_n, tau):
     """Least-squares line tau = c + sigma_n tan phi; returns (c, phi [rad]). ValueError for fewer
     than two distinct normal stresses."""
-    n = len(sigma_n)
-    if n < 2 or len(tau) != n:
-        raise ValueError("fit_coulomb: need at least two (sigma_n, tau) pairs")
-    mx, my = sum(sigma_n) / n, sum(tau) / n
-    sxx = sum((x - mx) ** 2 for x in sigma_n)
-    if sxx <= 0:
-        raise ValueError("fit_coulomb: the normal stresses must differ")
-    t = sum((x - mx) * (y - my) for x, y in zip(sigma_n, tau)) / sxx
-    return my - t * mx, math.atan(t)
+    t, c = _line(sigma_n, tau, "fit_coulomb", "(sigma_n, tau) pairs", "normal stresses")
+    return c, math.atan(t)
 
 
 def simple_shear_test(sigma_n, joint_cohesion, joint_tan_phi, young, poisson, spacing=1.0, seed=1, length_blocks=24,

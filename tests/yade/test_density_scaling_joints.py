@@ -33,6 +33,20 @@ first = ts.lastCheck
 """
 
 
+# a box on the bonded row and 30 random convex blocks (0.1 m to 1 m) above it, apart, with random velocities
+PILE30 = """
+O.bodies.append(polygon2d([(-6.5, 0), (-6, 0), (-6, 12), (-6.5, 12)], rock, fixed=True))
+O.bodies.append(polygon2d([(6, 0), (6.5, 0), (6.5, 12), (6, 12)], rock, fixed=True))
+rng = random.Random(5)
+for k in range(30):
+    n, R = rng.randint(3, 8), 10 ** rng.uniform(-1, 0) / 2
+    a0 = rng.uniform(0, 2 * math.pi)
+    cx, cy = -4 + 2 * (k % 5) + rng.uniform(-0.3, 0.3), 2 + 1.1 * (k // 5)  # apart: no overlap at the start
+    pts = [(cx + R * math.cos(a0 + 2 * math.pi * j / n), cy + R * math.sin(a0 + 2 * math.pi * j / n)) for j in range(n)]
+    b = O.bodies.append(polygon2d(pts, rock))
+    O.bodies[b].state.vel = (rng.uniform(-1, 1), rng.uniform(-1, 0), 0)
+"""
+
 def test_a_joint_made_between_estimates_scales_its_blocks_without_a_full_estimate():
     (r,) = run_ok(SCENE + """
 # a 0.25 m block falls on the 0.3 m one: a joint made at some step, far from any scheduled estimate
@@ -67,17 +81,7 @@ def test_random_pile_settles_under_density_scaling_with_joints_made_between_esti
     """30 random convex blocks (0.1 m to 1 m) dropped into a box under density scaling, estimates only
     every 5000 steps: every joint they make in between is added incrementally; the pile comes to rest
     (no refusal, no explosion: the stepper's motion check would stop the run)."""
-    (r,) = run_ok(SCENE + """
-O.bodies.append(polygon2d([(-6.5, 0), (-6, 0), (-6, 12), (-6.5, 12)], rock, fixed=True))
-O.bodies.append(polygon2d([(6, 0), (6.5, 0), (6.5, 12), (6, 12)], rock, fixed=True))
-rng = random.Random(5)
-for k in range(30):
-    n, R = rng.randint(3, 8), 10 ** rng.uniform(-1, 0) / 2
-    a0 = rng.uniform(0, 2 * math.pi)
-    cx, cy = -4 + 2 * (k % 5) + rng.uniform(-0.3, 0.3), 2 + 1.1 * (k // 5)  # apart: no overlap at the start
-    pts = [(cx + R * math.cos(a0 + 2 * math.pi * j / n), cy + R * math.sin(a0 + 2 * math.pi * j / n)) for j in range(n)]
-    b = O.bodies.append(polygon2d(pts, rock))
-    O.bodies[b].state.vel = (rng.uniform(-1, 1), rng.uniform(-1, 0), 0)
+    (r,) = run_ok(SCENE + PILE30 + """
 ts.interval = 5000
 ts.checkNextStep()
 checks = 0
@@ -158,15 +162,7 @@ def test_a_loaded_density_scaled_scene_keeps_its_scales_and_schedule():
     differs from a fresh engine's), scales 0.7 % off the uninterrupted run's and positions 0.5 mm
     apart after 30 steps (30-block pile, 0.1-1 m). They are saved now: the loaded scene continues like the
     uninterrupted run, on the same estimate steps."""
-    (r,) = run_ok(SCENE + """
-O.bodies.append(polygon2d([(-6.5, 0), (-6, 0), (-6, 12), (-6.5, 12)], rock, fixed=True))
-O.bodies.append(polygon2d([(6, 0), (6.5, 0), (6.5, 12), (6, 12)], rock, fixed=True))
-rng = random.Random(5)
-for k in range(30):
-    n, R = rng.randint(3, 8), 10 ** rng.uniform(-1, 0) / 2
-    a0 = rng.uniform(0, 2 * math.pi)
-    cx, cy = -4 + 2 * (k % 5) + rng.uniform(-0.3, 0.3), 2 + 1.1 * (k // 5)
-    O.bodies.append(polygon2d([(cx + R * math.cos(a0 + 2 * math.pi * j / n), cy + R * math.sin(a0 + 2 * math.pi * j / n)) for j in range(n)], rock))
+    (r,) = run_ok(SCENE + PILE30 + """
 ts.interval = 100
 ts.checkNextStep()
 advance(4000)
