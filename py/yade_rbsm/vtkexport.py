@@ -31,7 +31,7 @@ import xml.etree.ElementTree as ET
 
 from . import omega
 
-__all__ = ["VtkSeries", "recorder", "blocks_polydata", "contacts_polydata", "write_pvd", "write_vtp"]
+__all__ = ["VtkSeries", "recorder", "series", "series_of", "blocks_polydata", "contacts_polydata", "write_pvd", "write_vtp"]
 
 
 def _vtk():
@@ -207,30 +207,64 @@ class VtkSeries:
         return out
 
 
-_recorders = {}  # the series of the recorder() engines, by number (a PyRunner's command is a string)
+def _read_pvd(path):
+    """[(time, file)] of a VTK collection file; [] if there is none (or it cannot be read)."""
+    try:
+        root = ET.parse(path).getroot()
+    except (OSError, ET.ParseError):
+        return []
+    coll = root.find("Collection")
+    return [] if coll is None else [(float(d.get("timestep")), d.get("file")) for d in coll.findall("DataSet")]
+
+
+_series = {}  # the series of the recorder() engines, by (directory, prefix)
+_made = 0  # recorder() engines made in this process (their default labels)
+
+
+def series(out_dir, prefix="rbsm", contacts=True, binary=True, resume=True):
+    """The VtkSeries that recorder() engines write to *out_dir*/*prefix*: made at its first use in this
+    process. Made after ``O.load`` (a restart: the engine was saved, the series lived in the process that
+    saved it), it keeps the snapshots its collection files list up to ``O.time`` and numbers the next
+    ones on; snapshots after ``O.time`` (from a run that went further) and those of a new run from t = 0
+    are not kept. *resume* False: a new series, whatever the files say (what recorder() makes)."""
+    from yade import O
+    key = (os.path.abspath(out_dir), prefix)
+    if key not in _series or not resume:
+        s = VtkSeries(out_dir, prefix, contacts, binary)
+        for kind in s.entries if resume else ():
+            s.entries[kind] = [e for e in _read_pvd(os.path.join(out_dir, "%s_%s.pvd" % (prefix, kind))) if e[0] < O.time]
+        if contacts and len(s.entries["contacts"]) != len(s.entries["blocks"]):
+            s.entries = {"blocks": [], "contacts": []}  # not the two collections of one series: start anew
+        _series[key] = s
+    return _series[key]
 
 
 def recorder(out_dir, prefix="rbsm", iterPeriod=0, virtPeriod=0.0, realPeriod=0.0, contacts=True, binary=True, label=""):
     """A PyRunner for ``O.engines`` that writes a :class:`VtkSeries` snapshot (blocks with their
     stresses, joints) every *iterPeriod* steps, *virtPeriod* s of simulated or *realPeriod* s of wall
     time: the RBSM counterpart of YADE's ``VTKRecorder``. ``vtkexport.series_of(engine)`` gives its
-    VtkSeries (files written, .pvd paths)::
+    VtkSeries (files written, .pvd paths). The engine names its series by directory and prefix, so a
+    scene saved with it and loaded by another process goes on writing the same collection::
 
         O.engines = O.engines + [vtkexport.recorder("out/vtk", "slope", iterPeriod=500)]
     """
     from yade import wrapper
     if not (iterPeriod > 0 or virtPeriod > 0 or realPeriod > 0):
         raise ValueError("vtkexport.recorder: give iterPeriod, virtPeriod or realPeriod > 0")
-    key = len(_recorders)
-    _recorders[key] = VtkSeries(out_dir, prefix, contacts, binary)
-    return wrapper.PyRunner(command="import yade_rbsm.vtkexport as _v; _v._recorders[%d].write()" % key, iterPeriod=int(iterPeriod),
-                            virtPeriod=float(virtPeriod), realPeriod=float(realPeriod), label=label or "vtkRecorder%d" % key)
+    global _made
+    args = (str(out_dir), str(prefix), bool(contacts), bool(binary))
+    series(*args, resume=False)
+    _made += 1
+    return wrapper.PyRunner(command="import yade_rbsm.vtkexport as _v; _v.series(*%r).write()" % (args,),
+                            iterPeriod=int(iterPeriod), virtPeriod=float(virtPeriod), realPeriod=float(realPeriod),
+                            label=label or "vtkRecorder%d" % (_made - 1))
 
 
 def series_of(engine):
     """The VtkSeries that a recorder() engine writes (its files, pvd paths)."""
+    import ast
     import re
-    m = re.search(r"_recorders\[(\d+)\]", engine.command)
+    m = re.search(r"_v\.series\(\*(\(.*\))\)\.write\(\)", engine.command)
     if not m:
         raise ValueError("vtkexport.series_of: not an engine made by vtkexport.recorder()")
-    return _recorders[int(m.group(1))]
+    return series(*ast.literal_eval(m.group(1)))

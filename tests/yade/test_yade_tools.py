@@ -188,3 +188,30 @@ report(n=n, back=[[i, [list(v) for v in vs], t] for i, vs, t in back],
         assert sum(verts, []) == pytest.approx(sum(world, []), abs=1e-15) and t == 1.0
     line = (tmp_path / "b.txt").read_text().split("\n")[3].split()
     assert float(line[3]) == pytest.approx(0.3)
+
+
+def test_vtk_recorder_survives_save_and_load_in_a_new_process(tmp_path):
+    """A scene saved with a vtkexport.recorder in O.engines and loaded by another process (the usual
+    restart of a long run): the recorder's series lived in a registry of the first process, so the loaded
+    PyRunner raised KeyError at its first snapshot and stopped the run. It now finds (or makes) its series
+    by directory and prefix, and a series made after O.load keeps the snapshots of the collection up to
+    O.time: the .pvd lists the first run's snapshots and the new ones, files numbered on."""
+    out = str(tmp_path / "vtk")
+    save = str(tmp_path / "scene.yade.gz")
+    run_ok(COLUMN + """
+from yade_rbsm import vtkexport
+O.engines = O.engines + [vtkexport.recorder(%r, 'col', iterPeriod=10)]
+O.run(25, True)
+O.save(%r)
+""" % (out, save), workdir=str(tmp_path))
+    r = run_ok("""
+O.load(%r)
+t0 = O.time
+O.run(20, True)
+import xml.etree.ElementTree as ET
+ds = ET.parse(%r).getroot().find('Collection').findall('DataSet')
+report(files=[d.get('file') for d in ds], times=[float(d.get('timestep')) for d in ds], t0=t0, iter=O.iter)
+""" % (save, out + "/col_blocks.pvd"), workdir=str(tmp_path))[0]
+    assert r["iter"] == 4025 + 20, r  # (COLUMN runs 4000 steps, then 25, then 20 after the load)
+    assert r["files"] == ["col_blocks_%04d.vtp" % k for k in range(len(r["files"]))] and len(r["files"]) == 5, r
+    assert sorted(r["times"]) == r["times"] and sum(t > r["t0"] for t in r["times"]) == 2, r
