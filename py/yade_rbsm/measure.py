@@ -5,7 +5,8 @@ YADE's ``utils.getStress()``, ``bodyStressTensors()``, ``fabricTensor()``, ``aab
 give NaN or garbage. Their RBSM equivalents, from the joints' tractions at their integration points:
 
 * :func:`block_stresses` - the average stress tensor of each block, σ_b = (1/V_b) Σ x ⊗ f over the
-  forces f the joints apply to it at points x (relative to its centroid; V_b = area × thickness);
+  forces f the joints (and, in a mixed scene, YADE's sphere contacts) apply to it at points x
+  (relative to its centroid; V_b = area × thickness);
 * :func:`stress` - the average stress of a set of blocks (default: the free blocks), the volume
   average of σ_b (Love-Weber: internal joints contribute (c1 − c2) ⊗ f, the branch vector form);
 * :func:`fabric_tensor` - (1/N) Σ n ⊗ n over the joints (optionally weighted by their length);
@@ -104,15 +105,34 @@ def _moments(O, table=None):
     t = joint_table(O) if table is None else table
     nb = len(O.bodies)
     c = np.zeros((nb, 2))
+    spheres = False
     for b in O.bodies:
         if b is not None:
             c[b.id] = (b.state.pos[0], b.state.pos[1])
+            spheres = spheres or type(b.shape).__name__ == "Sphere"
     M = np.zeros((nb, 2, 2))
     for body, sign in ((t.id1, -1.0), (t.id2, 1.0)):
         bid = body[t.joint]
         r = t.x - c[bid]
         np.add.at(M, bid, sign * r[:, :, None] * t.force[:, None, :])
+    if spheres:  # YADE's point contacts of spheres on blocks (mixed scenes), only where there are spheres
+        for bid, x, f in _sphere_contact_forces(O):
+            M[bid] += np.outer(np.subtract(x, c[bid]), f)
     return M
+
+
+def _sphere_contact_forces(O):
+    """(block id, contact point, force on the block) of each real ScGeom contact of a Polygon2D block
+    (Law2_ScGeom_FrictPhys_CundallStrack applies -(Fn + Fs) to body 1 and Fn + Fs to body 2 at
+    ScGeom.contactPoint; x-y components)."""
+    for I in O.interactions:
+        if not I.isReal or type(I.geom).__name__ != "ScGeom":
+            continue
+        f = I.phys.normalForce + I.phys.shearForce
+        x = I.geom.contactPoint
+        for bid, sign in ((I.id1, -1.0), (I.id2, 1.0)):
+            if type(O.bodies[bid].shape).__name__ == "Polygon2D":
+                yield bid, (x[0], x[1]), (sign * f[0], sign * f[1])
 
 
 def _matrix3(m, scale):

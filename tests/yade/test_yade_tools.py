@@ -215,3 +215,30 @@ report(files=[d.get('file') for d in ds], times=[float(d.get('timestep')) for d 
     assert r["iter"] == 4025 + 20, r  # (COLUMN runs 4000 steps, then 25, then 20 after the load)
     assert r["files"] == ["col_blocks_%04d.vtp" % k for k in range(len(r["files"]))] and len(r["files"]) == 5, r
     assert sorted(r["times"]) == r["times"] and sum(t > r["t0"] for t in r["times"]) == 2, r
+
+
+def test_block_stress_counts_a_sphere_resting_on_the_block():
+    """measure.block_stresses in a mixed scene: a 2 x 1 m block on a fixed base with a heavy sphere on
+    it. The sphere's contact (YADE's ScGeom) loads the block's top; the joints alone gave
+    sigma_yy = -(Ws + W) / (2 w t) (the sphere's weight missing at the top, the block out of balance);
+    with it -(2 Ws + W) / (2 w t), as for a block loaded by another block (the column test above)."""
+    r = run_ok("""
+from yade import utils
+from yade_rbsm import polygon2d, measure, mixed_engines
+rock = RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5)
+grain = FrictMat(young=1e8, poisson=0.2, density=2e5, frictionAngle=0.5)
+O.materials.append([rock, grain])
+O.bodies.append(polygon2d([(-3, -1), (3, -1), (3, 0), (-3, 0)], rock, fixed=True))
+O.bodies.append(polygon2d([(-1, 0), (1, 0), (1, 1), (-1, 1)], rock))
+s = O.bodies.append(utils.sphere((0.0, 1.2, 0), 0.2, material=grain))
+O.bodies[s].state.blockedDOFs = "zXY"
+O.engines = mixed_engines(gravity=(0, -9.81, 0), damping=0.8)
+O.run(6000, True)
+sg = measure.block_stresses()[1]
+report(syy=sg[1, 1], sxx=sg[0, 0], sxy=sg[0, 1], syx=sg[1, 0], Ws=O.bodies[s].state.mass * 9.81,
+       W=O.bodies[1].state.mass * 9.81, v=O.bodies[s].state.vel.norm())
+""")[0]
+    assert r["v"] < 1e-5, r
+    expect = -(2 * r["Ws"] + r["W"]) / (2 * 2.0 * 1.0)
+    assert r["syy"] == pytest.approx(expect, rel=2e-3), r  # (as the column test: the joints sit an overlap lower)
+    assert abs(r["sxy"] - r["syx"]) < 1e-6 * abs(expect), r
