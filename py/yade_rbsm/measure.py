@@ -99,8 +99,8 @@ def joint_table(O=None):
 
 
 def _moments(O, table=None):
-    """Per body id, the 2×2 sums [[Σ x fx, Σ x fy], [Σ y fx, Σ y fy]] of the joint forces on the block,
-    x relative to its centroid (numpy array indexed by body id; rows of bodies without joints are 0)."""
+    """Per body id, the 2×2 sums [[Σ x fx, Σ x fy], [Σ y fx, Σ y fy]] of the joint (and sphere contact)
+    forces on the block, x relative to its centroid (numpy array indexed by body id; 0 without contacts)."""
     import numpy as np
     t = joint_table(O) if table is None else table
     nb = len(O.bodies)
