@@ -257,46 +257,57 @@ class Slope:
         """Ground surface elevation at x (constant beyond the ends)."""
         return _interp(self.surface, x)
 
-    def boundaries(self, x: float) -> List[float]:
+    def boundaries(self, x):
         """Effective elevations ``e_i`` of the top of each layer at x.
 
         ``e_0`` is the ground; ``e_i = min(e_(i-1), top_i(x))`` so that the
         layers never overlap and never rise above the ground.  Layer ``i``
         occupies ``[e_(i+1), e_i]`` (the last one extends to -infinity);
         material between the ground and the first layer's top polyline (if
-        it has one) belongs to the first layer.
+        it has one) belongs to the first layer.  *x* a number (floats) or an
+        array (arrays, element by element: every slice of a circle at once).
         """
-        e = [float(self.ground(x))]
+        e = [np.asarray(self.ground(x), dtype=float)]
         for L in self.layers[1:]:
-            e.append(min(e[-1], float(_interp(L.top, x))))
-        return e
+            e.append(np.minimum(e[-1], _interp(L.top, x)))
+        return [_like(x, v) for v in e]
+
+    def layer_index(self, x, y):
+        """Index in ``layers`` of the layer containing (x, y): the deepest layer whose effective top is at
+        or above y (a point above the ground: the first layer); numbers or arrays, as :meth:`boundaries`."""
+        k = np.zeros(np.shape(x), dtype=int)
+        for i, t in enumerate(self.boundaries(x)):
+            k = np.where(np.asarray(y) <= t + self.tol, i, k)
+        return int(k) if np.ndim(x) == 0 else k
 
     def layer_at(self, x: float, y: float) -> Layer:
-        """Layer containing point (x, y): the deepest layer whose effective
-        top is at or above y (a point above the ground: the first layer)."""
-        chosen = self.layers[0]
-        for L, t in zip(self.layers, self.boundaries(x)):
-            if y <= t + self.tol:
-                chosen = L
-        return chosen
+        """Layer containing point (x, y) (:meth:`layer_index`)."""
+        return self.layers[self.layer_index(x, y)]
 
-    def column_weight(self, x: float, y_base: float, b: float) -> float:
+    def column_weight(self, x, y_base, b):
         """Weight of a vertical column of width ``b`` between ``y_base`` and
         the ground at abscissa ``x``, with the layer unit weights.  This is
         exact for a slice whose top, base and layer boundaries are straight
-        across its width (midpoint rule on a trapezoid)."""
+        across its width (midpoint rule on a trapezoid). Numbers or arrays."""
         e = self.boundaries(x) + [-math.inf]
         w = 0.0
         for i, L in enumerate(self.layers):
-            w += L.gamma * max(0.0, e[i] - max(e[i + 1], y_base))
-        return w * b
+            w = w + L.gamma * np.maximum(0.0, e[i] - np.maximum(e[i + 1], y_base))
+        return _like(x, w * b)
 
-    def pore_pressure(self, x: float, y_base: float, w_slice: float, b: float) -> float:
+    def pore_pressure(self, x, y_base, w_slice, b):
+        """Pore pressure at the base of a column (phreatic line, or ru times the column's weight per width,
+        or 0). Numbers or arrays."""
         if self.phreatic is not None:
-            return self.gamma_w * max(0.0, float(_interp(self.phreatic, x)) - y_base)
+            return _like(x, self.gamma_w * np.maximum(0.0, _interp(self.phreatic, x) - y_base))
         if self.ru > 0.0:
-            return self.ru * w_slice / b
-        return 0.0
+            return _like(x, self.ru * np.asarray(w_slice) / b)
+        return _like(x, np.zeros(np.shape(x)))
+
+
+def _like(x, v):
+    """v as a float when x is a number, as an array when x is one."""
+    return float(v) if np.ndim(x) == 0 else np.asarray(v, dtype=float)
 
 
 # --------------------------------------------------------------------------
@@ -418,27 +429,12 @@ def _positive_interval(xs: List[float], f, lo: float, hi: float, tol: float, wha
 
 def _finish_slices(slope: Slope, xm, b, ybase, alpha_geom, x_entry, x_exit, what) -> Slices:
     """Compute weights, strengths, pore pressures; fix the sliding sense."""
-    # column_weight, pore_pressure and layer_at of every slice at once (same arithmetic, per slice):
-    # the critical-circle search cuts hundreds of circles into slices
-    e = [np.asarray(slope.ground(xm), dtype=float)]
-    for L in slope.layers[1:]:
-        e.append(np.minimum(e[-1], _interp(L.top, xm)))
-    e.append(np.full(xm.shape, -math.inf))
-    W = np.zeros(xm.shape)
-    c = np.full(xm.shape, slope.layers[0].c)
-    tphi = np.full(xm.shape, slope.layers[0].tan_phi)
-    for i, L in enumerate(slope.layers):
-        W = W + L.gamma * np.maximum(0.0, e[i] - np.maximum(e[i + 1], ybase))
-        deeper = ybase <= e[i] + slope.tol  # layer_at: the deepest layer whose top is at or above the base
-        c = np.where(deeper, L.c, c)
-        tphi = np.where(deeper, L.tan_phi, tphi)
-    W = W * b
-    if slope.phreatic is not None:
-        u = slope.gamma_w * np.maximum(0.0, _interp(slope.phreatic, xm) - ybase)
-    elif slope.ru > 0.0:
-        u = slope.ru * W / b
-    else:
-        u = np.zeros(xm.shape)
+    # every slice at once (the critical-circle search cuts hundreds of circles into slices)
+    W = slope.column_weight(xm, ybase, b)
+    u = slope.pore_pressure(xm, ybase, W, b)
+    k = slope.layer_index(xm, ybase)
+    c = np.array([L.c for L in slope.layers])[k]
+    tphi = np.array([L.tan_phi for L in slope.layers])[k]
     # alpha_geom: angle of the base rising towards +x.  A mass sliding
     # towards -x is driven by bases rising towards +x.
     drive = float(np.sum(W * np.sin(alpha_geom)))

@@ -297,9 +297,9 @@ def test_circle_weight_equals_sliding_area_times_gamma():
 
 @pytest.mark.parametrize("water", ["dry", "ru", "phreatic"])
 def test_slices_equal_the_per_column_functions(water):
-    """circle_slices computes every slice at once (numpy); its weights, pore pressures and base
-    strengths equal, to the bit, Slope.column_weight, pore_pressure and layer_at slice by slice on
-    a two-layer slope with a layer top crossing the circles, for 300 random circles."""
+    """circle_slices asks the slope for every slice at once (arrays); its weights, pore pressures and
+    base strengths equal, to the bit, Slope.column_weight, pore_pressure and layer_at asked slice by
+    slice (numbers) on a two-layer slope with a layer top crossing the circles, for 300 random circles."""
     kw = {"dry": {}, "ru": {"ru": 0.25}, "phreatic": {"phreatic": [(0, -1), (20, 6), (40, 8)]}}[water]
     s = Slope([(0, 0), (10, 0), (20, 10), (40, 10)],
               [Layer(c=5.0, phi=30.0, gamma=19.0), Layer(c=20.0, phi=15.0, gamma=21.0, top=[(0, -2), (15, 3), (40, 4)])],
