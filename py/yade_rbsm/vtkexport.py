@@ -118,11 +118,6 @@ def blocks_polydata(O=None, table=None):
     return pd
 
 
-def joint_state(ph):
-    """0 intact and sticking, 1 slipping somewhere, 2 open somewhere (open wins)."""
-    return 2 if ph.nOpen > 0 else (1 if ph.nSlipping > 0 else 0)
-
-
 def contacts_polydata(O=None, table=None):
     """vtkPolyData of the real RBSM joints as line cells p0-p1 (see the module docstring); *table*: a
     measure.joint_table of the same state, if the caller has one."""
@@ -132,7 +127,7 @@ def contacts_polydata(O=None, table=None):
     from .measure import joint_table
     t = joint_table(O) if table is None else table
     J = len(t.id1)
-    state = np.where(t.nOpen > 0, 2, np.where(t.nSlipping > 0, 1, 0))
+    state = np.where(t.nOpen > 0, 2, np.where(t.nSlipping > 0, 1, 0))  # 0 sticking, 1 slipping, 2 open (open wins)
     force = t.normalForce[:, None] * t.normal + t.shearForce[:, None] * t.tangent
     pd = _polydata(np.column_stack((t.p0, t.p1)).reshape(-1, 2), np.full(J, 2), np.arange(2 * J), {},
                    {"id1": t.id1, "id2": t.id2, "nIntact": t.nIntact, "nSlipping": t.nSlipping, "nOpen": t.nOpen,
