@@ -150,6 +150,9 @@ bool RbsmTimeStepper::jointAsDynContact(const Interaction& I, int body1, int bod
 // Accuracy, not stability: only the step the stepper sets (setDt) takes it; a checked O.dt is not refused for it.
 bool RbsmTimeStepper::impactsMatter() const { return setDt && impactSafety < safetyFactor && !(newtonDamping > 0); }
 
+// A first contact is an impact: its fraction of the stable step.
+Real RbsmTimeStepper::firstContactSafety() const { return impactsMatter() ? impactSafety : safetyFactor; }
+
 bool RbsmTimeStepper::mayImpact(const RbsmPhys& p) const { return impactsMatter() && p.nIntact() == 0; }
 
 // Joint dashpots (Law2's dampingRatio) lower the limit of the central-difference scheme, whose
@@ -254,7 +257,8 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 	const auto& bodies = scene->bodies->body;
 	boundsHold(bodies.size());
 	rbsm::DynContact                 c;
-	const Real                       inf = std::numeric_limits<Real>::infinity();
+	const Real                       inf     = std::numeric_limits<Real>::infinity();
+	const bool                       rescale = scalesHold(bodies.size()); // density scaling: the joints' blocks too
 	for (const Interaction* I : jointsByIds([this](const Interaction& J) { return J.iterMadeReal == scene->iter; })) {
 		const Body::id_t                 id1 = I->getId1(), id2 = I->getId2();
 		const std::vector<rbsm::DynBody> pair { dynBody(*bodies[id1]), dynBody(*bodies[id2]) };
@@ -271,7 +275,7 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 				rowBounds[kRow * id + 1] += p.dampingCoefficient * area;
 				rowBounds[kRow * id + 2] += std::min(p.kn, p.ks) * area;
 			}
-			if (scalesHold(bodies.size())) { // its rows grew: its scale again, at the same target
+			if (rescale) { // its rows grew: its scale again, at the same target
 				rowDiag[id] += diag[side];
 				raiseMassScale(size_t(id), massScaleOf(size_t(id)));
 			}
@@ -382,9 +386,8 @@ void RbsmTimeStepper::scaleMasses()
 	// and each free block without joints, its first contact's step: the median of the jointed blocks
 	// alone was that of the few that had landed in a pile being dropped (one block touching a wall at
 	// a corner: 0.15 s), at which the others, still falling, passed through their neighbours
-	const Real firstSafety = impactsMatter() ? impactSafety : safetyFactor;
 	for (Real w2 : firstOmega2)
-		own.push_back(firstSafety * 2 / std::sqrt(w2) / std::sqrt(1 + newtonDamping));
+		own.push_back(firstContactSafety() * 2 / std::sqrt(w2) / std::sqrt(1 + newtonDamping));
 	if (own.empty()) {
 		scaledDt = std::numeric_limits<Real>::infinity();
 		return;
@@ -535,8 +538,7 @@ Real RbsmTimeStepper::stableDt() const
 	// the blocks below it are scaled up to it; without a jointed block (a pile dropped, scaledDt inf)
 	// the unscaled step of the first contacts, as without scaling (inf left O.dt at YADE's 1e-8)
 	if (densityScaling && massScaled && std::isfinite(scaledDt)) return scaledDt;
-	const Real firstSafety = impactsMatter() ? impactSafety : safetyFactor;
-	return std::min(safetyFactor * criticalDt, firstSafety * firstContactDt) / std::sqrt(1 + newtonDamping);
+	return std::min(safetyFactor * criticalDt, firstContactSafety() * firstContactDt) / std::sqrt(1 + newtonDamping);
 }
 
 Real RbsmTimeStepper::limit()

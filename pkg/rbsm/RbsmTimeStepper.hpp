@@ -107,6 +107,7 @@ private:
 	bool jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
 	bool mayImpact(const RbsmPhys& p) const;
 	bool impactsMatter() const;
+	Real firstContactSafety() const;
 	Real blockDt(size_t id) const; // damped step of body id's rows (rowBounds)
 	bool ownedHere(const Body& b) const; // the block is integrated on this rank (always true outside yade.mpy's workers)
 	void refuse(const std::string& message);
