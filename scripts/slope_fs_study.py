@@ -7,11 +7,15 @@
 # peak, times --k; strength reduction of the assembly's strength), joints (ductile joints of strength
 # --cj [Pa], --tanphij, divided by F), or table (--table T.json: the joints that give the assembly c'/F,
 # tan phi'/F in a table of simple-shear fits, scripts/simple_shear_table.py, interpolated as Calibration
-# does). Prints the Bishop and Spencer FS of the critical circle, the RBSM FS with its bracket, and
-# RESULT <json>.
+# does), or stress (the soil's, ductile: no strength reduction; Kulhawy's stress-based FS of the settled
+# slope's block stresses, critical circle at least --min-depth spacings deep). Prints the Bishop and Spencer
+# FS of the critical circle, the RBSM FS with its bracket, and RESULT <json>.
+#   --slope 20   20 deg face, c' = 5 kPa (c'/gamma H = 0.025), phi' = 20 deg
+#   --slope 30   30 deg face, c' = 20 kPa (0.1), phi' = 25 deg
 #
 #   build/yade-rbsm -n -x scripts/slope_fs_study.py --slope 45 --mode calibrated --spacing 1 --seed 1
 #   build/yade-rbsm -j1 -n -x scripts/slope_fs_study.py --slope 45 --mode joints --cj 12999 --tanphij 0.2267
+#   build/yade-rbsm -j1 -n -x scripts/slope_fs_study.py --slope 30 --mode stress --spacing 0.5 --seed 2
 import argparse
 import json
 import math
@@ -25,13 +29,20 @@ import yade_rbsm as yr
 from yade_rbsm import limit_equilibrium as le
 from yade_rbsm import slope as sl
 from yade_rbsm.calibration import calibrate
+from yade_rbsm.safety import stress_field
 from yade_rbsm.strength_reduction import strength_reduction
 
 SLOPES = {"gl": dict(beta=math.degrees(math.atan(0.5)), c=10e3, phi=20.0),
-          "45": dict(beta=45.0, c=10e3, phi=40.0)}
+          "45": dict(beta=45.0, c=10e3, phi=40.0),
+          "20": dict(beta=20.0, c=5e3, phi=20.0),
+          "30": dict(beta=30.0, c=20e3, phi=25.0)}
 ap = argparse.ArgumentParser()
 ap.add_argument("--slope", choices=sorted(SLOPES), default="gl")
-ap.add_argument("--mode", choices=["raw", "ductile", "calibrated", "joints", "table"], default="raw")
+ap.add_argument("--mode", choices=["raw", "ductile", "calibrated", "joints", "table", "stress"], default="raw")
+ap.add_argument("--young", type=float, default=100e6, help="E of the blocks [Pa]")
+ap.add_argument("--poisson", type=float, default=0.3, help="Poisson's ratio of the blocks")
+ap.add_argument("--brittle", action="store_true", help="--mode stress: brittle joints (Kawai's), as in --mode raw")
+ap.add_argument("--min-depth", type=float, default=2.0, help="--mode stress: least depth of a circle, in spacings")
 ap.add_argument("--k", type=float, default=1.0, help="--mode calibrated: factor on the calibrated joint strengths")
 ap.add_argument("--cj", type=float, help="joint cohesion [Pa] (--mode joints; --mode table: if the soil is outside it)")
 ap.add_argument("--tanphij", type=float, help="joint tan phi (--mode joints; --mode table: as --cj)")
@@ -49,7 +60,8 @@ ap.add_argument("--d-fail", type=float, default=0.1, help="strength reduction's 
 ap.add_argument("--max-steps", type=int, default=8000, help="steps of a trial (x 3 without density scaling)")
 args = ap.parse_args(sys.argv[1:])
 
-H, gamma, young, poisson = 10.0, 20e3, 100e6, 0.3
+H, gamma = 10.0, 20e3
+young, poisson = args.young, args.poisson
 s = SLOPES[args.slope]
 c, phi = s["c"], math.radians(s["phi"])
 L = H / math.tan(math.radians(s["beta"]))
@@ -57,7 +69,8 @@ surface = [(0, 0), (12, 0), (12 + L, H), (32 + L, H)]
 t0 = time.time()
 
 soil = le.Slope(surface, le.Layer(c=c / 1e3, phi=s["phi"], gamma=gamma / 1e3))
-crit = le.critical_circle(soil, (5, 40), (10, 50), nx=12, ny=12, refine=3, base=0.0, r_range=(5, 60), nr=19)
+SEARCH = dict(x_range=(5, 20 + L), y_range=(10, 50), nx=12, ny=12, refine=3, base=0.0, r_range=(5, 60), nr=19)
+crit = le.critical_circle(soil, **SEARCH)
 spencer = le.spencer_circle(soil, crit.circle)
 print("limit equilibrium: Bishop %.3f, Spencer %.3f on %s" % (crit.fs, spencer.fs, crit.circle))
 
@@ -101,7 +114,7 @@ elif args.mode == "joints":
     cj, tj = args.cj, args.tanphij
     print("joints: c_j = %.5g Pa, tan phi_j = %.5f (phi_j = %.2f deg)" % (cj, tj, math.degrees(math.atan(tj))))
 mat = wrapper.RbsmMat(young=young, poisson=poisson, density=gamma / 9.81, frictionAngle=math.atan(tj), cohesion=cj,
-                      tensileStrength=c / math.tan(phi), ductile=args.mode != "raw")
+                      tensileStrength=c / math.tan(phi), ductile=args.mode != "raw" and not args.brittle)
 O.materials.append(mat)
 sb = sl.voronoi_slope_blocks(surface, 0.0, spacing=args.spacing, seed=args.seed, min_distance=0.5 * args.spacing)
 sl.build_scene(sb, mat)
@@ -113,6 +126,21 @@ ok, steps, ratio = sl.settle(tol=1e-4, max_steps=50000, check=200, density_scali
 broken = sum(1 for I in O.interactions if I.isReal and I.phys.nIntact < len(I.phys.intactPoints))
 print("%d blocks, %d joints; gravity stage %s after %d steps, %d joints broken" % (len(sb.free), nj,
       "converged" if ok else "NOT converged", steps, broken))
+if args.mode == "stress":
+    t1 = time.time()
+    field = stress_field()
+    r = le.critical_circle(soil, method="stress", stress=field, min_depth=args.min_depth * args.spacing, **SEARCH)
+    on_bishop = le.stress_circle(soil, crit.circle, field)
+    wall = time.time() - t0
+    print("stress-based FS %.4f on %s (%.1f s search); on Bishop's circle %.4f; Bishop %.4f; %.0f s wall"
+          % (r.fs, r.circle, time.time() - t1, on_bishop.fs, crit.fs, wall))
+    print("RESULT " + json.dumps(dict(slope=args.slope, mode=args.mode, spacing=args.spacing, seed=args.seed,
+                                      blocks=len(sb.free), fs=r.fs, on_bishop_circle=on_bishop.fs, bishop=crit.fs,
+                                      spencer=spencer.fs, circle=[r.circle.xc, r.circle.yc, r.circle.R],
+                                      min_depth=args.min_depth * args.spacing, young=young, poisson=poisson,
+                                      brittle=args.brittle, broken=broken, joints=nj, wall=wall,
+                                      settle_steps=steps)))
+    sys.exit(0)
 # unscaled, the step is about 3 x shorter: the same simulated time per trial takes 3 x the steps
 r = strength_reduction(start=args.start, grow=args.grow, rtol=0.02, density_scaling=ds,
                        max_steps=args.max_steps if ds else 3 * args.max_steps, check=200, d_fail=args.d_fail,

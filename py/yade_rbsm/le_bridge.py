@@ -1,12 +1,13 @@
 """Limit equilibrium (:mod:`yade_rbsm.limit_equilibrium`) on a block slope: its ground and material
 as a limit_equilibrium.Slope (:func:`le_slope`), the methods on one slope (:func:`limit_equilibrium_summary`)
-and the tables that print them next to the RBSM factors of safety (:func:`table2`, :func:`fs_table`).
+and the tables that print them next to the RBSM factors of safety (:func:`table2`, :func:`fs_table`),
+and the blocks' stresses as a field for limit_equilibrium's stress-based method (:func:`stress_field`).
 Import these from ``yade_rbsm.safety``."""
 import math
 
 from .checks import number
 
-__all__ = ["table2", "le_slope", "limit_equilibrium_summary", "fs_table"]
+__all__ = ["table2", "le_slope", "limit_equilibrium_summary", "fs_table", "stress_field", "StressField"]
 
 
 def table2(rbsm, fellenius=None, title="Table 2 - factor of safety along the slip surface", reference=()):
@@ -76,3 +77,54 @@ def fs_table(rows, title="Factor of safety - all methods"):
         f = "%8.3f" % fs if isinstance(fs, (int, float)) and fs is not None else "%8s" % "-"
         lines.append("%-*s %s  %s" % (w, lab, f, note))
     return "\n".join(lines)
+
+
+class StressField:
+    """The stress of a block slope as a field for :func:`limit_equilibrium.stress_circle`: called with
+    arrays x, y [m] it returns (sxx, syy, sxy) [kPa, compression positive], linear between the
+    blocks' centroids (Delaunay triangles of them) and the nearest block's outside their hull.
+    ``points`` [m] and ``values`` [kPa] are the centroids and their stresses."""
+
+    def __init__(self, points, values):
+        from scipy.interpolate import LinearNDInterpolator, NearestNDInterpolator
+        import numpy as np
+        self.points, self.values = np.asarray(points, dtype=float), np.asarray(values, dtype=float)
+        if self.points.ndim != 2 or self.points.shape[1] != 2 or self.values.shape != (len(self.points), 3):
+            raise ValueError("StressField: points must be (n, 2) and values (n, 3); got %s and %s"
+                             % (self.points.shape, self.values.shape))
+        if len(self.points) < 3:
+            raise ValueError("StressField: at least 3 blocks are needed (got %d)" % len(self.points))
+        self._linear = LinearNDInterpolator(self.points, self.values)
+        self._nearest = NearestNDInterpolator(self.points, self.values)
+
+    def __call__(self, x, y):
+        import numpy as np
+        p = np.column_stack([np.ravel(x), np.ravel(y)])
+        s = self._linear(p)
+        out = np.isnan(s[:, 0])
+        if out.any():
+            s[out] = self._nearest(p[out])
+        return s.T
+
+
+def stress_field(O=None, ids=None):
+    """A :class:`StressField` of the blocks *ids* (default: every Polygon2D block that is not fixed) in
+    their present state: each block's average stress (:func:`yade_rbsm.measure.block_stresses`, Love-Weber
+    from its joint forces) at its centroid. For Kulhawy's stress-based factor of safety of a settled
+    slope: ``limit_equilibrium.critical_circle(soil, ..., method="stress", stress=stress_field(),
+    min_depth=2 * block_size)``. The stresses are the joints': in a dry slope the effective ones."""
+    from . import measure, omega
+    if O is None:
+        from yade import O
+    S = measure.block_stresses(O)
+    want = None if ids is None else set(int(i) for i in ids)
+    pts, vals = [], []
+    for b in O.bodies:
+        if b is None or b.id not in S or (want is None and omega.is_fixed(b)) or (want is not None and b.id not in want):
+            continue
+        s = S[b.id]
+        pts.append((b.state.pos[0], b.state.pos[1]))
+        vals.append((-s[0][0] / 1e3, -s[1][1] / 1e3, -0.5 * (s[0][1] + s[1][0]) / 1e3))
+    if want is not None and len(pts) < len(want):
+        raise ValueError("stress_field: ids %s are not Polygon2D blocks" % sorted(want - set(int(b.id) for b in O.bodies if b is not None and b.id in S))[:10])
+    return StressField(pts, vals)

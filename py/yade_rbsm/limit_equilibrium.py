@@ -111,6 +111,8 @@ __all__ = [
     "SearchResult",
     "fellenius_circle",
     "bishop_circle",
+    "stress_circle",
+    "stress_polyline",
     "spencer_circle",
     "fellenius_polyline",
     "circle_slices",
@@ -702,6 +704,53 @@ def bishop_circle(
     return Result("Bishop simplified (circle)", F, float(np.sum(Np)), drive, res, sl.n, circle, it, sl)
 
 
+def _stress_result(sl: Slices, stress, method: str, surface) -> Result:
+    """FS of a slip surface from a stress field (Kulhawy 1969, the finite-element stress method):
+    at every slice base the field's normal stress sigma_n and shear stress tau on the base,
+    FS = sum (c + (sigma_n - u) tan phi) l / sum tau l. The normal stresses act through the centre
+    of a circle, so for phi = 0 and a field in equilibrium with the weight the FS is Fellenius's and
+    Bishop's exactly (moment equilibrium of the mass): whatever its horizontal stresses."""
+    ag = -sl.direction * sl.alpha  # the base's angle rising towards +x
+    ca, sa = np.cos(ag), np.sin(ag)
+    s = np.asarray(stress(np.asarray(sl.x, dtype=float), np.asarray(sl.y_base, dtype=float)), dtype=float)
+    if s.shape != (3, sl.n):
+        raise ValueError(f"stress(x, y) must return (sxx, syy, sxy), each of the {sl.n} points' values; got shape {s.shape}")
+    if not np.all(np.isfinite(s)):
+        bad = int(np.argmax(~np.all(np.isfinite(s), axis=0)))
+        raise ValueError(f"stress(x, y) is not finite at ({sl.x[bad]:.4g}, {sl.y_base[bad]:.4g}) (slice {bad})")
+    sxx, syy, sxy = s
+    nx, ny = -sa, ca  # base normal, into the mass above
+    tx, ty = sl.direction * ca, sl.direction * sa  # along the base, the way the mass slides
+    sig_n = sxx * nx * nx + syy * ny * ny + 2 * sxy * nx * ny  # compression positive
+    tau = -(tx * (sxx * nx + sxy * ny) + ty * (sxy * nx + syy * ny))  # the base's resistance to the sliding
+    eff = sig_n - sl.u
+    strength = sl.c + np.maximum(eff, 0.0) * sl.tan_phi
+    drive = float(np.sum(tau * sl.l))
+    if not drive > 1e-9 * float(np.sum((np.abs(tau) + np.abs(sig_n)) * sl.l)):  # (round-off of a field without shear)
+        raise ValueError(f"the stress field holds no shear against the sliding on this {method} surface (sum tau l = {drive:.4g})")
+    res = float(np.sum(strength * sl.l))
+    notes = f"{int(np.sum(eff < 0))} slice base(s) in tension (no friction)" if np.any(eff < 0) else ""
+    return Result(method, res / drive, float(np.sum(eff * sl.l)), drive, res, sl.n, surface, 0, sl, notes)
+
+
+def stress_circle(slope: Slope, circle, stress, n: int = 50) -> Result:
+    """Factor of safety of a circular slip surface from a given stress field (Kulhawy's method, as
+    SIGMA/W-SLOPE/W's finite-element stress method): the stresses at each slice's base are the
+    field's, not the equilibrium of the slices. *stress*: a function ``(x, y) -> (sxx, syy, sxy)``
+    of arrays [kPa, compression positive, total stress: the slope's pore pressure is taken off],
+    e.g. ``yade_rbsm.safety.stress_field()`` of a settled block slope. ``normal`` and ``shear`` of the
+    Result are the integrals of sigma_n' and tau over the surface [kN/m]."""
+    if not isinstance(circle, Circle):
+        circle = Circle(*circle)
+    return _stress_result(circle_slices(slope, circle, n), stress, "stress field (circle)", circle)
+
+
+def stress_polyline(slope: Slope, surface, stress, n: int = 50) -> Result:
+    """:func:`stress_circle` on a polyline slip surface (e.g. a path along block joints)."""
+    sl = polyline_slices(slope, surface, n)
+    return _stress_result(sl, stress, "stress field (polyline)", np.asarray(surface, dtype=float))
+
+
 def spencer_circle(slope: Slope, circle, n: int = 50, tol: float = 1e-10) -> Result:
     """Spencer's method for a circular slip surface (see the module docstring).
 
@@ -800,6 +849,12 @@ def _lin(rng, k, name):
     return np.linspace(a, b, k) if k > 1 else np.array([0.5 * (a + b)])
 
 
+def _depth(slope: Slope, r: Result) -> float:
+    """Greatest depth of the sliding mass below the ground, at the slices' middles."""
+    sl = r.slices
+    return float(np.max(slope.ground(sl.x) - sl.y_base))
+
+
 def _lowest(r: Result) -> float:
     """Lowest point of a circular slip surface between its entry and exit."""
     c, sl = r.surface, r.slices
@@ -821,6 +876,8 @@ def critical_circle(
     n: int = 50,
     refine: int = 0,
     base: Optional[float] = None,
+    stress=None,
+    min_depth: float = 0.0,
 ) -> SearchResult:
     """Grid search for the circle of minimum FS.
 
@@ -832,12 +889,24 @@ def critical_circle(
     previous spacing (same nx, ny).  Invalid circles are skipped, and so are
     circles that dip below a firm base at elevation ``base`` (if given:
     the depth limit of Taylor's and Griffiths & Lane's D factor).
+    ``method="stress"`` with ``stress=`` a stress field: :func:`stress_circle`. ``min_depth``: circles
+    whose sliding mass is nowhere deeper than this are skipped (a stress field sampled at block
+    centroids does not resolve a slide a block or two deep).
     Raises ValueError if no trial circle is valid.
     """
     meth = method.lower()
     fns = {"fellenius": fellenius_circle, "bishop": bishop_circle, "spencer": spencer_circle}
+    if meth == "stress":
+        if stress is None or not callable(stress):
+            raise ValueError("method='stress' needs stress=, a function (x, y) -> (sxx, syy, sxy) [kPa]")
+        fns["stress"] = lambda slope_, circle_, n_: stress_circle(slope_, circle_, stress, n_)
+    elif stress is not None:
+        raise ValueError(f"stress= is for method='stress' (got method {method!r})")
     if meth not in fns:
-        raise ValueError(f"method must be 'fellenius', 'bishop' or 'spencer', got {method!r}")
+        raise ValueError(f"method must be 'fellenius', 'bishop', 'spencer' or 'stress', got {method!r}")
+    min_depth = _finite("min_depth", min_depth)
+    if min_depth < 0:
+        raise ValueError(f"min_depth must be >= 0, got {min_depth}")
     fn = fns[meth]
     if (r_range is None) == (through is None):
         raise ValueError("give exactly one of r_range or through")
@@ -868,6 +937,8 @@ def critical_circle(
                         continue
                     if base is not None and _lowest(r) < base - slope.tol:
                         below += 1
+                        continue
+                    if min_depth > 0 and _depth(slope, r) < min_depth:
                         continue
                     if not (r.fs > 0 and math.isfinite(r.fs)):
                         continue

@@ -38,7 +38,8 @@ to the ground along their end segments, or vertically like a tension crack if th
 does not rise to the ground, for the slices).
 
 Modules: contact_safety (contact FS along a polyline or circle), slip_surface (the surface of
-slipping joints and its FS), le_bridge (limit equilibrium on the block slope, the tables), geometry
+slipping joints and its FS), le_bridge (limit equilibrium on the block slope, the tables, the blocks'
+stresses as a field for the stress-based FS), geometry
 (polylines, circles); every name is importable from here.
 
 Bad input (an empty or NaN polyline, a polyline or circle that meets no joint of the scene: "misses
@@ -46,9 +47,9 @@ the slope", a non-positive band) raises ValueError naming the problem.
 """
 from .contact_safety import ContactFS, contact_fs, contact_fs_circle  # noqa: F401
 from .geometry import check_polyline, circle_through, point_polyline_distance  # noqa: F401
-from .le_bridge import fs_table, le_slope, limit_equilibrium_summary, table2  # noqa: F401
+from .le_bridge import StressField, fs_table, le_slope, limit_equilibrium_summary, stress_field, table2  # noqa: F401
 from .slip_surface import SlipSurface, probe_slipping_surface, slip_surface_fs, slipping_surface  # noqa: F401
 
 __all__ = ["ContactFS", "contact_fs", "contact_fs_circle", "SlipSurface", "slipping_surface", "slip_surface_fs",
            "point_polyline_distance", "table2", "le_slope", "circle_through", "limit_equilibrium_summary",
-           "fs_table", "check_polyline", "probe_slipping_surface"]
+           "fs_table", "check_polyline", "probe_slipping_surface", "stress_field", "StressField"]

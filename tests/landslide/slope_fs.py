@@ -6,6 +6,7 @@
 #            slope's failure); the mechanism PNGs
 #   ductile  RbsmMat.ductile reaches the joints and survives O.save / O.load
 #   calibration  a small calibration grid from inside a slope scene (which it leaves as it was)
+#   stress   Kulhawy's stress-based FS from the settled blocks' stresses (safety.stress_field), ductile joints
 #   messages  what a user trying these tools ran into: bad calibrate arguments, strength reduction on an
 #            empty scene and on bricks (no mechanism)
 # Prints RESULT <json>.
@@ -75,6 +76,28 @@ elif what == "sr":
     out["png_sizes"] = [os.path.getsize(os.path.join(os.path.dirname(png), f)) for f in out["pngs"]]
     r0 = strength_reduction(mass_fraction=0.0, **kw)
     out["fs_any_block"] = r0.fs
+elif what == "stress":
+    from yade_rbsm import limit_equilibrium as le
+    from yade_rbsm.safety import stress_field
+    sb, _ = scene(ductile=True)
+    ok, steps, ratio = sl.settle(tol=1e-4, max_steps=50000, check=200, density_scaling=True)
+    field = stress_field()
+    GL = [(0, 0), (12, 0), (32, 10), (52, 10)]
+    soil = le.Slope(GL, le.Layer(c=10.0, phi=20.0, gamma=20.0))
+    search = dict(x_range=(5, 40), y_range=(10, 50), nx=12, ny=12, refine=3, base=0.0, r_range=(5, 60), nr=19)
+    bishop = le.critical_circle(soil, **search)
+    kul = le.critical_circle(soil, method="stress", stress=field, min_depth=2.0, **search)
+    undrained = le.Slope(GL, le.Layer(c=10.0, phi=0.0, gamma=20.0))
+    sxx, syy, sxy = field([40.0], [2.0])  # under the crest, 8 m deep
+    try:
+        stress_field(ids=[0, 10 ** 6])
+        bad_ids = "accepted"
+    except ValueError as e:
+        bad_ids = str(e)
+    out = dict(ok=ok, bishop=bishop.fs, stress=kul.fs, depth=float(max(soil.ground(kul.best.slices.x) - kul.best.slices.y_base)),
+               undrained_stress=le.stress_circle(undrained, bishop.circle, field).fs,
+               undrained_bishop=le.bishop_circle(undrained, bishop.circle).fs,
+               syy=float(syy[0]), sxx=float(sxx[0]), bad_ids=bad_ids)
 elif what == "ductile":
     sb, _ = scene(ductile=True)
     yr.advance(1)

@@ -73,3 +73,20 @@ def test_what_a_new_user_ran_into():
     assert "seed" in r["no_seeds"]
     assert "no free blocks" in r["empty"]
     assert "every trial stable" in r["bricks"] and "no mechanism" in r["bricks"]
+
+
+def test_stress_based_fs_of_the_settled_blocks_agrees_with_bishop():
+    """Kulhawy's method on the blocks' own stresses (safety.stress_field, ductile joints, settled): the
+    critical circle's FS within 5 % of Bishop's on the same slope (measured 1.359 against 1.382), where
+    strength reduction on the soil's joints gives +65 %; with phi = 0 the stress FS on Bishop's circle
+    is Bishop's as far as the block stresses are in equilibrium with the weight (the normal stresses
+    act through the centre; measured 0.48367 against 0.48375); the vertical stress 8 m under the crest
+    is the overburden (158.9 kPa), the horizontal one below it (58.6 kPa)."""
+    r = _run("stress")
+    print(r)
+    assert r["ok"]
+    assert r["stress"] == pytest.approx(r["bishop"], rel=0.05)
+    assert r["depth"] >= 2.0
+    assert r["undrained_stress"] == pytest.approx(r["undrained_bishop"], rel=0.002)
+    assert r["syy"] == pytest.approx(20.0 * 8.0, rel=0.15) and 0 < r["sxx"] < r["syy"]
+    assert "not Polygon2D blocks" in r["bad_ids"] and "1000000" in r["bad_ids"]

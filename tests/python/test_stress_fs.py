@@ -1,0 +1,100 @@
+"""Issue 21: Kulhawy's stress-based factor of safety (limit_equilibrium.stress_circle, stress_polyline,
+critical_circle(method="stress")), checked against closed forms without YADE.
+
+The field: an infinite slope, ground y = x tan(beta), every stress a function of the depth d normal to
+the ground only (sigma_nn = gamma d cos(beta), tau = gamma d sin(beta) on planes parallel to it, and any
+K times sigma_nn along them): in equilibrium with the weight whatever K."""
+import math
+
+import numpy as np
+import pytest
+
+from conftest import load_limit_equilibrium
+
+le = load_limit_equilibrium()
+
+BETA = math.radians(30.0)
+GAMMA = 20.0
+GROUND = [(-60.0, -60.0 * math.tan(BETA)), (60.0, 60.0 * math.tan(BETA))]
+
+
+def infinite_slope_field(K, beta=BETA, gamma=GAMMA):
+    """(x, y) -> (sxx, syy, sxy) [kPa, compression positive] of the infinite slope."""
+    e_s = np.array([-math.cos(beta), -math.sin(beta)])  # along the ground, downhill
+    e_n = np.array([math.sin(beta), -math.cos(beta)])  # normal to it, into the ground
+
+    def field(x, y):
+        d = np.asarray(x) * math.sin(beta) - np.asarray(y) * math.cos(beta)
+        s_nn, tau = gamma * math.cos(beta) * d, gamma * math.sin(beta) * d
+        s_ss = K * s_nn
+        t = lambda a, b: np.multiply.outer(a, b)  # noqa: E731
+        sig = (s_ss[..., None, None] * t(e_s, e_s) + s_nn[..., None, None] * t(e_n, e_n)
+               + tau[..., None, None] * (t(e_s, e_n) + t(e_n, e_s)))
+        return np.array([sig[..., 0, 0], sig[..., 1, 1], sig[..., 0, 1]])
+
+    return field
+
+
+def _soil(phi, c=10.0):
+    return le.Slope(GROUND, le.Layer(c=c, phi=phi, gamma=GAMMA))
+
+
+@pytest.mark.parametrize("K", [0.3, 1.0, 2.5])
+@pytest.mark.parametrize("circle", [(0.0, 20.0, 22.0), (-5.0, 15.0, 20.0), (8.0, 30.0, 33.0)])
+def test_undrained_circle_equals_bishop_for_any_field_in_equilibrium(K, circle):
+    """phi = 0: the normal stresses act through the centre, so Σ tau l R is the weight's moment and the
+    stress-based FS is Bishop's (= Fellenius's) exactly, whatever the horizontal stresses (K)."""
+    soil = _soil(0.0)
+    kul = le.stress_circle(soil, circle, infinite_slope_field(K), n=4000)
+    bishop = le.bishop_circle(soil, circle, n=4000)
+    assert kul.fs == pytest.approx(bishop.fs, rel=2e-5), (kul, bishop)
+    assert kul.shear == pytest.approx(bishop.shear, rel=2e-5)
+
+
+def test_frictional_surface_parallel_to_the_ground_gives_the_infinite_slope_ratio():
+    """A long surface parallel to the ground at depth d: (c + gamma d cos² tan phi) / (gamma d sin cos),
+    the closed form of the infinite slope, from the field alone (its short ends aside)."""
+    d, phi, c = 4.0, 25.0, 10.0
+    soil = _soil(phi, c)
+    off = d / math.cos(BETA)  # vertical offset of the parallel line
+
+    def g(x):
+        return x * math.tan(BETA)
+
+    surface = [(-41.0, g(-41.0)), (-40.0, g(-40.0) - off), (40.0, g(40.0) - off), (41.0, g(41.0))]
+    r = le.stress_polyline(soil, surface, infinite_slope_field(0.5), n=8000)
+    tp = math.tan(math.radians(phi))
+    closed = (c + GAMMA * d * math.cos(BETA) ** 2 * tp) / (GAMMA * d * math.sin(BETA) * math.cos(BETA))
+    assert r.fs == pytest.approx(closed, rel=0.02), (r.fs, closed)
+    # and the field's K counts once phi > 0 (the test above could not see a K dropped on the way)
+    other = le.stress_polyline(soil, surface, infinite_slope_field(2.0), n=8000)
+    assert other.fs != pytest.approx(r.fs, rel=1e-3)
+
+
+def test_critical_circle_stress_method_and_min_depth():
+    soil = _soil(20.0)
+    field = infinite_slope_field(0.5)
+    kw = dict(x_range=(-20, 20), y_range=(10, 40), nx=6, ny=6, r_range=(8, 50), nr=8)
+    free = le.critical_circle(soil, method="stress", stress=field, **kw)
+    deep = le.critical_circle(soil, method="stress", stress=field, min_depth=6.0, **kw)
+    assert free.best.method == "stress field (circle)" and free.fs > 0
+    assert float(np.max(soil.ground(deep.best.slices.x) - deep.best.slices.y_base)) >= 6.0
+    assert deep.fs >= free.fs
+
+
+def test_bad_stress_input_is_refused_with_what_is_wrong():
+    soil = _soil(20.0)
+    circle = (0.0, 20.0, 22.0)
+    with pytest.raises(ValueError, match="must return"):
+        le.stress_circle(soil, circle, lambda x, y: (x, y))
+    with pytest.raises(ValueError, match="not finite at"):
+        le.stress_circle(soil, circle, lambda x, y: (x * np.nan, y, y))
+    with pytest.raises(ValueError, match="holds no shear"):
+        le.stress_circle(soil, circle, lambda x, y: (0 * x + 100.0, 0 * x + 100.0, 0 * x))  # isotropic
+    kw = dict(x_range=(-20, 20), y_range=(10, 40), nx=2, ny=2, r_range=(8, 50), nr=2)
+    with pytest.raises(ValueError, match="needs stress="):
+        le.critical_circle(soil, method="stress", **kw)
+    with pytest.raises(ValueError, match="is for method='stress'"):
+        le.critical_circle(soil, method="bishop", stress=infinite_slope_field(1.0), **kw)
+    with pytest.raises(ValueError, match="min_depth"):
+        le.critical_circle(soil, method="bishop", min_depth=-1.0, **kw)
