@@ -98,3 +98,20 @@ def test_bad_stress_input_is_refused_with_what_is_wrong():
         le.critical_circle(soil, method="bishop", stress=infinite_slope_field(1.0), **kw)
     with pytest.raises(ValueError, match="min_depth"):
         le.critical_circle(soil, method="bishop", min_depth=-1.0, **kw)
+
+
+def test_a_slope_facing_the_other_way_gives_the_same_fs():
+    """The mirror image (ground falling towards +x, the mass sliding towards +x): the same FS."""
+    field = infinite_slope_field(0.7)
+
+    def mirrored(x, y):
+        sxx, syy, sxy = field(-np.asarray(x), np.asarray(y))
+        return np.array([sxx, syy, -sxy])
+
+    for phi in (0.0, 25.0):
+        soil = _soil(phi)
+        flipped = le.Slope([(-x, y) for x, y in reversed(GROUND)], le.Layer(c=10.0, phi=phi, gamma=GAMMA))
+        a = le.stress_circle(soil, (-5.0, 15.0, 20.0), field, n=2000)
+        b = le.stress_circle(flipped, (5.0, 15.0, 20.0), mirrored, n=2000)
+        assert b.slices.direction == -a.slices.direction
+        assert b.fs == pytest.approx(a.fs, rel=1e-9), (a, b)
