@@ -115,3 +115,14 @@ def test_a_slope_facing_the_other_way_gives_the_same_fs():
         b = le.stress_circle(flipped, (5.0, 15.0, 20.0), mirrored, n=2000)
         assert b.slices.direction == -a.slices.direction
         assert b.fs == pytest.approx(a.fs, rel=1e-9), (a, b)
+
+
+def test_search_reports_a_broken_field_and_too_deep_min_depth():
+    """critical_circle used to skip every circle on any ValueError: a field returning the wrong shape gave
+    'no valid trial circle in the search space', and so did a min_depth deeper than the slope."""
+    soil = _soil(20.0)
+    kw = dict(x_range=(-20, 20), y_range=(10, 40), nx=3, ny=3, r_range=(8, 50), nr=3)
+    with pytest.raises(ValueError, match="must return"):
+        le.critical_circle(soil, method="stress", stress=lambda x, y: (x, y), **kw)
+    with pytest.raises(ValueError, match="min_depth"):
+        le.critical_circle(soil, method="stress", stress=infinite_slope_field(0.5), min_depth=500.0, **kw)
