@@ -81,12 +81,15 @@ def fs_table(rows, title="Factor of safety - all methods"):
 
 class StressField:
     """The stress of a block slope as a field for :func:`limit_equilibrium.stress_circle`: called with
-    arrays x, y [m] it returns (sxx, syy, sxy) [kPa, compression positive], linear between the
-    blocks' centroids (Delaunay triangles of them) and the nearest block's outside their hull.
+    x, y [m] (numbers or arrays of one shape) it returns (sxx, syy, sxy) [kPa, compression positive] of
+    that shape, linear between the blocks' centroids (Delaunay triangles of them) and the nearest
+    block's outside their hull; NaN at a point farther than *reach* [m] from every centroid (beyond the
+    blocks: the stress method then says the surface leaves the field) and at a non-finite point.
     ``points`` [m] and ``values`` [kPa] are the centroids and their stresses."""
 
-    def __init__(self, points, values):
-        from scipy.interpolate import LinearNDInterpolator, NearestNDInterpolator
+    def __init__(self, points, values, reach=None):
+        from scipy.interpolate import LinearNDInterpolator
+        from scipy.spatial import QhullError, cKDTree
         import numpy as np
         self.points, self.values = np.asarray(points, dtype=float), np.asarray(values, dtype=float)
         if self.points.ndim != 2 or self.points.shape[1] != 2 or self.values.shape != (len(self.points), 3):
@@ -94,23 +97,36 @@ class StressField:
                              % (self.points.shape, self.values.shape))
         if len(self.points) < 3:
             raise ValueError("StressField: at least 3 blocks are needed (got %d)" % len(self.points))
-        self._linear = LinearNDInterpolator(self.points, self.values)
-        self._nearest = NearestNDInterpolator(self.points, self.values)
+        self.reach = None if reach is None else number("StressField", "reach", reach, 0, low_open=True)
+        try:
+            self._linear = LinearNDInterpolator(self.points, self.values)
+        except QhullError:
+            raise ValueError("StressField: the %d centroids are on one line (a single row of blocks?): no field "
+                             "between them" % len(self.points)) from None
+        self._tree = cKDTree(self.points)
 
     def __call__(self, x, y):
         import numpy as np
-        p = np.column_stack([np.ravel(x), np.ravel(y)])
-        s = self._linear(p)
-        out = np.isnan(s[:, 0])
-        if out.any():
-            s[out] = self._nearest(p[out])
-        return s.T
+        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+        p = np.column_stack([x.ravel(), y.ravel()])
+        s = np.full((len(p), 3), np.nan)
+        ok = np.all(np.isfinite(p), axis=1)
+        if ok.any():
+            d, k = self._tree.query(p[ok])
+            v = self._linear(p[ok])
+            out = np.isnan(v[:, 0])
+            v[out] = self.values[k[out]]
+            if self.reach is not None:
+                v[d > self.reach] = np.nan
+            s[ok] = v
+        return s.T.reshape((3,) + x.shape)
 
 
 def stress_field(O=None, ids=None):
     """A :class:`StressField` of the blocks *ids* (default: every Polygon2D block that is not fixed) in
     their present state: each block's average stress (:func:`yade_rbsm.measure.block_stresses`, Love-Weber
-    from its joint forces) at its centroid. For Kulhawy's stress-based factor of safety of a settled
+    from its joint forces) at its centroid, up to the largest block's reach (centroid to farthest vertex)
+    beyond the centroids. For Kulhawy's stress-based factor of safety of a settled
     slope: ``limit_equilibrium.critical_circle(soil, ..., method="stress", stress=stress_field(),
     min_depth=2 * block_size)``. The stresses are the joints': in a dry slope the effective ones."""
     from . import measure, omega
@@ -118,13 +134,18 @@ def stress_field(O=None, ids=None):
         from yade import O
     S = measure.block_stresses(O)
     want = None if ids is None else set(int(i) for i in ids)
-    pts, vals = [], []
+    pts, vals, reach = [], [], 0.0
     for b in O.bodies:
         if b is None or b.id not in S or (want is None and omega.is_fixed(b)) or (want is not None and b.id not in want):
             continue
         s = S[b.id]
         pts.append((b.state.pos[0], b.state.pos[1]))
         vals.append((-s[0][0] / 1e3, -s[1][1] / 1e3, -0.5 * (s[0][1] + s[1][0]) / 1e3))
+        reach = max([reach] + [math.hypot(v[0] - pts[-1][0], v[1] - pts[-1][1])
+                               for v in b.shape.worldVertices(b.state.pos, b.state.ori)])
     if want is not None and len(pts) < len(want):
         raise ValueError("stress_field: ids %s are not Polygon2D blocks" % sorted(want - set(int(b.id) for b in O.bodies if b is not None and b.id in S))[:10])
-    return StressField(pts, vals)
+    if not pts:
+        raise ValueError("stress_field: ids is empty" if want is not None else
+                         "stress_field: no Polygon2D block in the scene that is not fixed (give ids= to take fixed ones)")
+    return StressField(pts, vals, reach=reach)

@@ -113,6 +113,7 @@ __all__ = [
     "bishop_circle",
     "stress_circle",
     "stress_polyline",
+    "StressFieldError",
     "spencer_circle",
     "fellenius_polyline",
     "circle_slices",
@@ -704,6 +705,16 @@ def bishop_circle(
     return Result("Bishop simplified (circle)", F, float(np.sum(Np)), drive, res, sl.n, circle, it, sl)
 
 
+class StressFieldError(ValueError):
+    """The stress field of the stress-based method gave no stresses on a slip surface: the wrong shape (a
+    mistake in the field: :func:`critical_circle` raises it) or not finite (``outside``: the surface leaves
+    the field's region, e.g. runs below the blocks; :func:`critical_circle` skips the circle)."""
+
+    def __init__(self, message, outside=False):
+        super().__init__(message)
+        self.outside = outside
+
+
 def _stress_result(sl: Slices, stress, method: str, surface) -> Result:
     """FS of a slip surface from a stress field (Kulhawy 1969, the finite-element stress method):
     at every slice base the field's normal stress sigma_n and shear stress tau on the base,
@@ -714,10 +725,11 @@ def _stress_result(sl: Slices, stress, method: str, surface) -> Result:
     ca, sa = np.cos(ag), np.sin(ag)
     s = np.asarray(stress(np.asarray(sl.x, dtype=float), np.asarray(sl.y_base, dtype=float)), dtype=float)
     if s.shape != (3, sl.n):
-        raise ValueError(f"stress(x, y) must return (sxx, syy, sxy), each of the {sl.n} points' values; got shape {s.shape}")
+        raise StressFieldError(f"stress(x, y) must return (sxx, syy, sxy), each of the {sl.n} points' values; got shape {s.shape}")
     if not np.all(np.isfinite(s)):
         bad = int(np.argmax(~np.all(np.isfinite(s), axis=0)))
-        raise ValueError(f"stress(x, y) is not finite at ({sl.x[bad]:.4g}, {sl.y_base[bad]:.4g}) (slice {bad})")
+        raise StressFieldError(f"stress(x, y) is not finite at ({sl.x[bad]:.4g}, {sl.y_base[bad]:.4g}) (slice {bad}): "
+                               "the surface runs outside the stress field (e.g. below the blocks)", outside=True)
     sxx, syy, sxy = s
     nx, ny = -sa, ca  # base normal, into the mass above
     tx, ty = sl.direction * ca, sl.direction * sa  # along the base, the way the mass slides
@@ -891,8 +903,10 @@ def critical_circle(
     the depth limit of Taylor's and Griffiths & Lane's D factor).
     ``method="stress"`` with ``stress=`` a stress field: :func:`stress_circle`. ``min_depth``: circles
     whose sliding mass is nowhere deeper than this are skipped (a stress field sampled at block
-    centroids does not resolve a slide a block or two deep).
-    Raises ValueError if no trial circle is valid.
+    centroids does not resolve a slide a block or two deep). Circles on which the field is not finite
+    (outside it, e.g. below the blocks) are skipped too; a field of the wrong shape raises its
+    :class:`StressFieldError`. Raises ValueError if no trial circle is valid, with how many were
+    below the base, outside the field or shallower than min_depth.
     """
     meth = method.lower()
     fns = {"fellenius": fellenius_circle, "bishop": bishop_circle, "spencer": spencer_circle}
@@ -922,7 +936,7 @@ def critical_circle(
     xs = _lin(x_range, nx, "x_range")
     ys = _lin(y_range, ny, "y_range")
     best = None
-    tried = valid = below = 0
+    tried = valid = below = outside = shallow = 0
     for level in range(refine + 1):
         for xc in xs:
             for yc in ys:
@@ -933,12 +947,18 @@ def critical_circle(
                         continue
                     try:
                         r = fn(slope, Circle(xc, yc, R), n)
+                    except StressFieldError as e:  # a field of the wrong shape fails on every circle: say so
+                        if not e.outside:
+                            raise
+                        outside += 1
+                        continue
                     except ValueError:
                         continue
                     if base is not None and _lowest(r) < base - slope.tol:
                         below += 1
                         continue
                     if min_depth > 0 and _depth(slope, r) < min_depth:
+                        shallow += 1
                         continue
                     if not (r.fs > 0 and math.isfinite(r.fs)):
                         continue
@@ -955,6 +975,8 @@ def critical_circle(
             xs = np.linspace(cx - hx, cx + hx, len(xs))
             ys = np.linspace(cy - hy, cy + hy, len(ys))
     if best is None:
-        why = f"; {below} of them dip below the firm base y = {base}" if below else ""
+        why = "".join([f"; {below} of them dip below the firm base y = {base}" if below else "",
+                       f"; {outside} run outside the stress field" if outside else "",
+                       f"; {shallow} are shallower than min_depth = {min_depth:g}" if shallow else ""])
         raise ValueError(f"no valid trial circle in the search space ({tried} tried{why})")
     return SearchResult(meth, best, best.surface, tried, valid, tried - valid)

@@ -94,7 +94,18 @@ elif what == "stress":
         bad_ids = "accepted"
     except ValueError as e:
         bad_ids = str(e)
-    out = dict(ok=ok, bishop=bishop.fs, stress=kul.fs, depth=float(max(soil.ground(kul.best.slices.x) - kul.best.slices.y_base)),
+    # without base= (or a limit-equilibrium ground wider than the blocks) the circles may run under the blocks
+    nobase = {k: v for k, v in search.items() if k != "base"}
+    bishop_nb = le.critical_circle(soil, **nobase)
+    kul_nb = le.critical_circle(soil, method="stress", stress=field, min_depth=2.0, **nobase)
+    O.resetThisScene()
+    try:
+        stress_field()
+        empty = "accepted"
+    except ValueError as e:
+        empty = str(e)
+    out = dict(ok=ok, bishop=bishop.fs, stress=kul.fs, bishop_nobase=bishop_nb.fs, stress_nobase=kul_nb.fs,
+               lowest_nobase=kul_nb.circle.yc - kul_nb.circle.R, empty=empty, depth=float(max(soil.ground(kul.best.slices.x) - kul.best.slices.y_base)),
                undrained_stress=le.stress_circle(undrained, bishop.circle, field).fs,
                undrained_bishop=le.bishop_circle(undrained, bishop.circle).fs,
                syy=float(syy[0]), sxx=float(sxx[0]), bad_ids=bad_ids)

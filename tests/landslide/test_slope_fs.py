@@ -90,3 +90,7 @@ def test_stress_based_fs_of_the_settled_blocks_agrees_with_bishop():
     assert r["undrained_stress"] == pytest.approx(r["undrained_bishop"], rel=0.002)
     assert r["syy"] == pytest.approx(20.0 * 8.0, rel=0.15) and 0 < r["sxx"] < r["syy"]
     assert "not Polygon2D blocks" in r["bad_ids"] and "1000000" in r["bad_ids"]
+    # without a firm base in the search the stress circle used to run 7.3 m under the blocks, on the nearest
+    # block's stress (1.185 against Bishop's 1.372); the field ends a block's reach beyond the centroids
+    assert r["stress_nobase"] == pytest.approx(r["bishop_nobase"], rel=0.05) and r["lowest_nobase"] > -2.0
+    assert "no Polygon2D block" in r["empty"] and "not fixed" in r["empty"]

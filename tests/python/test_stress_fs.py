@@ -115,3 +115,61 @@ def test_a_slope_facing_the_other_way_gives_the_same_fs():
         b = le.stress_circle(flipped, (5.0, 15.0, 20.0), mirrored, n=2000)
         assert b.slices.direction == -a.slices.direction
         assert b.fs == pytest.approx(a.fs, rel=1e-9), (a, b)
+
+
+# -- the blocks' field (safety.StressField) in the stress method: what a new user ran into ---------------------
+def _block_field(beta=BETA, spacing=1.0, reach=None, depth=30.0):
+    """A StressField of the infinite slope's stresses sampled at a grid of 'centroids' from *depth* below the
+    ground up to it (the blocks' region), as safety.stress_field() builds it from a settled slope."""
+    from yade_rbsm.le_bridge import StressField
+    xs = np.arange(-50.0, 50.0 + 1e-9, spacing)
+    pts = np.array([(x, x * math.tan(beta) - d) for x in xs for d in np.arange(0.5 * spacing, depth, spacing)])
+    vals = np.array(infinite_slope_field(0.5)(pts[:, 0], pts[:, 1])).T
+    return StressField(pts, vals, reach=reach)
+
+
+def test_stress_field_takes_numbers_and_arrays_of_any_shape_and_nan():
+    f = _block_field()
+    sxx, syy, sxy = f(0.0, -5.0)  # numbers in, numbers out
+    assert np.ndim(sxx) == 0 and float(syy) == pytest.approx(infinite_slope_field(0.5)(0.0, -5.0)[1], rel=1e-9)
+    assert np.shape(f(np.zeros((2, 3)), np.full((2, 3), -5.0))) == (3, 2, 3)
+    s = f(np.array([np.nan, 0.0, np.inf]), np.array([-5.0, np.nan, -5.0]))  # was an IndexError of scipy's
+    assert np.isnan(s).all()
+
+
+def test_stress_field_of_collinear_blocks_is_refused_with_what_is_wrong():
+    from yade_rbsm.le_bridge import StressField
+    with pytest.raises(ValueError, match="on one line"):  # was scipy's QhullError ("initial simplex is flat")
+        StressField([(0.0, -0.5), (1.0, -0.5), (2.0, -0.5)], np.zeros((3, 3)))
+
+
+def test_stress_field_is_not_finite_beyond_the_blocks():
+    """The nearest block's stress is taken only within *reach* of the centroids: a circle running far below
+    the blocks (no base= in the search, or a limit-equilibrium ground wider than the block model) used
+    to get the nearest block's stress there, silently (the 2:1 RBSM slope without base=: 1.185 against
+    Bishop's 1.372 on a circle 7.3 m under the blocks)."""
+    f = _block_field(reach=1.0)
+    assert np.isfinite(f(0.0, -30.4)).all() and np.isnan(f(0.0, -35.0)).all()
+    assert np.isfinite(_block_field()(0.0, -35.0)).all()  # without reach: the nearest block everywhere
+    soil = _soil(20.0)
+    thin = _block_field(reach=1.0, depth=5.0)  # blocks down to 5 m under the ground
+    with pytest.raises(ValueError, match="outside the stress field"):
+        le.stress_circle(soil, (-5.0, 30.0, 45.0), thin)  # 19 m deep
+    kw = dict(x_range=(-20, 20), y_range=(10, 60), nx=6, ny=6, r_range=(8, 60), nr=10)
+    for field in (f, thin):
+        r = le.critical_circle(soil, method="stress", stress=field, **kw)
+        assert np.isfinite(field(r.best.slices.x, r.best.slices.y_base)).all()
+    with pytest.raises(ValueError, match="run outside the stress field"):  # every circle: say why
+        le.critical_circle(soil, method="stress", stress=thin, x_range=(-5, 5), y_range=(28, 32), nx=2, ny=2,
+                           r_range=(40, 45), nr=2)
+
+
+def test_search_reports_a_broken_field_and_too_deep_min_depth():
+    """critical_circle used to skip every circle on any ValueError: a field returning the wrong shape gave
+    'no valid trial circle in the search space', and so did a min_depth deeper than the slope."""
+    soil = _soil(20.0)
+    kw = dict(x_range=(-20, 20), y_range=(10, 40), nx=3, ny=3, r_range=(8, 50), nr=3)
+    with pytest.raises(ValueError, match="must return"):
+        le.critical_circle(soil, method="stress", stress=lambda x, y: (x, y), **kw)
+    with pytest.raises(ValueError, match="min_depth"):
+        le.critical_circle(soil, method="stress", stress=infinite_slope_field(0.5), min_depth=500.0, **kw)
