@@ -95,8 +95,9 @@ public:
 private:
 	void fullCheck();
 	void addJointsMadeThisStep();
-	Real checkMotion();
-	void keepBoundsAhead();
+	Real watchBodies(); // one pass over the bodies: keepBoundAhead and checkMotion of each; returns the travel limit
+	void checkMotion(const Body& b, Real& travelDt);
+	void keepBoundAhead(const Body& b, bool& runCollider);
 	void scaleMasses();
 	Real massScaleOf(size_t id) const;
 	void raiseMassScale(size_t id, Real s);
