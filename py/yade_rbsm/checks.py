@@ -5,7 +5,7 @@ and the argument instead of looping forever (``check=0``) or silently switching 
 import math
 import numbers
 
-__all__ = ["number", "count"]
+__all__ = ["number", "count", "body_ids"]
 
 
 def number(where, name, value, low=None, high=None, low_open=False, high_open=False):
@@ -31,3 +31,11 @@ def count(where, name, value, low=1):
     if value < low:
         raise ValueError("%s: %s must be a whole number >= %d (got %r)" % (where, name, low, value))
     return int(value)
+
+
+def body_ids(where, ids):
+    """*ids* (an iterable of body ids, not a string) as a set of ints, else ValueError naming the entry
+    that is not a whole number >= 0 (5.7 or "12" are not ids)."""
+    if isinstance(ids, (str, bytes)) or not hasattr(ids, "__iter__"):
+        raise ValueError("%s: ids must be a list of body ids (got %r)" % (where, ids))
+    return {count(where, "every id", i, low=0) for i in ids}

@@ -130,10 +130,11 @@ def stress_field(O=None, ids=None):
     slope: ``limit_equilibrium.critical_circle(soil, ..., method="stress", stress=stress_field(),
     min_depth=2 * block_size)``. The stresses are the joints': in a dry slope the effective ones."""
     from . import measure, omega
+    from .checks import body_ids
+    want = None if ids is None else body_ids("stress_field", ids)
     if O is None:
         from yade import O
     S = measure.block_stresses(O)
-    want = None if ids is None else set(int(i) for i in ids)
     pts, vals, reach = [], [], 0.0
     for b in O.bodies:
         if b is None or b.id not in S or (want is None and omega.is_fixed(b)) or (want is not None and b.id not in want):

@@ -173,3 +173,15 @@ def test_search_reports_a_broken_field_and_too_deep_min_depth():
         le.critical_circle(soil, method="stress", stress=lambda x, y: (x, y), **kw)
     with pytest.raises(ValueError, match="min_depth"):
         le.critical_circle(soil, method="stress", stress=infinite_slope_field(0.5), min_depth=500.0, **kw)
+
+
+def test_stress_field_refuses_ids_that_are_not_body_ids():
+    """ids=[5.7] was taken as body 5 and ids="12" as bodies 1 and 2 (a new user's trial); refused before
+    the scene is read."""
+    from yade_rbsm.le_bridge import stress_field
+    for bad, what in (([5.7], "5.7"), ("12", "'12'"), ([-1], "-1"), (7, "7")):
+        with pytest.raises(ValueError, match="stress_field") as e:
+            stress_field(O=object(), ids=bad)
+        assert what in str(e.value), (bad, str(e.value))
+    with pytest.raises(ValueError, match="stress_field"):
+        stress_field(O=object(), ids=[3, float("nan")])
