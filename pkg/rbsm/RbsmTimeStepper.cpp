@@ -462,38 +462,23 @@ void RbsmTimeStepper::applyMassScale()
 	}
 }
 
-// Both per-body checks of every step in one pass: at 10⁵ blocks each pass streams every Body, State,
-// Shape and Bound from memory, and two passes cost the stepper a fifth of a step.
-Real RbsmTimeStepper::watchBodies()
-{
-	const auto& bodies = scene->bodies->body;
-	if (boundPose.size() < bodies.size()) boundPose.resize(bodies.size());
-	Real travelDt    = std::numeric_limits<Real>::infinity();
-	bool runCollider = false;
-	for (const auto& b : bodies) {
-		if (!b) continue;
-		keepBoundAhead(*b, runCollider);
-		checkMotion(*b, travelDt);
-	}
-	if (runCollider) scene->doSort = true;
-	return travelDt;
-}
-
 // A block that moves by a good part of its own size in one step passes through thin neighbours
 // (tunnelling) or is exploding: never silent. Lowers travelDt to the step at which this block would
 // move by half that (for setDt: a block with short, soft edges, e.g. a near-circle, has a long stable step).
-void RbsmTimeStepper::checkMotion(const Body& b, Real& travelDt)
+inline void RbsmTimeStepper::checkMotion(const Body& b, const Polygon2D& poly, Real& travelDt)
 {
-	if (!(maxStepMotion > 0)) return;
-	const Polygon2D* poly = polygonOf(b);
-	const State&     s    = *b.state;
-	if (!poly || isFixed(s) || !ownedHere(b)) return;
+	const State& s = *b.state;
 	if (size_t(b.id) >= inradius.size()) inradius.resize(size_t(b.id) + 1, 0);
 	Real& r = inradius[b.id];
-	if (!(r > 0)) r = rbsm::centroidInradius(poly->vertices);
-	const Real speed = s.vel.head<2>().norm() + std::abs(s.angVel.z()) * poly->circumradius, motion = speed * scene->dt;
+	if (!(r > 0)) r = rbsm::centroidInradius(poly.vertices);
+	const Real speed = s.vel.head<2>().norm() + std::abs(s.angVel.z()) * poly.circumradius, motion = speed * scene->dt;
 	if (speed > 0) travelDt = std::min(travelDt, 0.5 * maxStepMotion * r / speed);
-	if (!(motion > maxStepMotion * r)) return; // (a NaN O.dt is the step check's to refuse, not a move)
+	if (motion > maxStepMotion * r) reportMotion(b, motion, r); // (a NaN O.dt is the step check's to refuse, not a move)
+}
+
+void RbsmTimeStepper::reportMotion(const Body& b, Real motion, Real r)
+{
+	const State& s = *b.state;
 	rbsm_report::stopAfterThisStep(*scene);
 	rbsm_report::limited(motionReports, [&](bool last) {
 		std::ostringstream msg;
@@ -512,11 +497,8 @@ void RbsmTimeStepper::checkMotion(const Body& b, Real& travelDt)
 // it, a step of spring energy from nothing at every landing (a rocking block bounced metres high).
 // So the collider runs at the next step when the next pose can leave the box: |Δx|∞ + R χ, with
 // this step's velocities added twice as margin, beyond the sweep (and half the box's round-off margin).
-void RbsmTimeStepper::keepBoundAhead(const Body& b, bool& runCollider)
+inline void RbsmTimeStepper::keepBoundAhead(const Body& b, const Polygon2D& poly, bool& runCollider)
 {
-	if (!b.bound) return;
-	const Polygon2D* poly = polygonOf(b);
-	if (!poly || !ownedHere(b)) return;
 	const State& st = *b.state;
 	Real         c, s;
 	planarCosSin(st.ori, c, s);
@@ -531,12 +513,32 @@ void RbsmTimeStepper::keepBoundAhead(const Body& b, bool& runCollider)
 		runCollider = true;
 		return;
 	}
-	const Real     R     = poly->circumradius;
+	const Real     R     = poly.circumradius;
 	const Real     chord = std::hypot(c - ref.c, s - ref.s);
 	const Vector3r d     = st.pos - b.bound->refPos;
 	const Real     move  = std::max(std::abs(d.x()), std::abs(d.y())) + 2 * scene->dt * st.vel.head<2>().cwiseAbs().maxCoeff()
 	        + R * (chord + 2 * scene->dt * std::abs(st.angVel.z()));
 	if (move > b.bound->sweepLength + 0.5e-6 * R) runCollider = true;
+}
+
+// Both per-body checks of every step in one pass: at 10⁵ blocks each pass streams every Body, State,
+// Shape and Bound from memory, and two passes cost the stepper a fifth of a step.
+Real RbsmTimeStepper::watchBodies()
+{
+	const auto& bodies = scene->bodies->body;
+	if (boundPose.size() < bodies.size()) boundPose.resize(bodies.size());
+	const bool watchMotion = maxStepMotion > 0;
+	Real       travelDt    = std::numeric_limits<Real>::infinity();
+	bool       runCollider = false;
+	for (const auto& b : bodies) {
+		if (!b) continue;
+		const Polygon2D* poly = polygonOf(*b);
+		if (!poly || !ownedHere(*b)) continue;
+		if (b->bound) keepBoundAhead(*b, *poly, runCollider);
+		if (watchMotion && !isFixed(*b->state)) checkMotion(*b, *poly, travelDt);
+	}
+	if (runCollider) scene->doSort = true;
+	return travelDt;
 }
 
 Real RbsmTimeStepper::stableDt() const
