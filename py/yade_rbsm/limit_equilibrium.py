@@ -718,7 +718,7 @@ class StressFieldError(ValueError):
 def _stress_result(sl: Slices, stress, method: str, surface) -> Result:
     """FS of a slip surface from a stress field (Kulhawy 1969, the finite-element stress method):
     at every slice base the field's normal stress sigma_n and shear stress tau on the base,
-    FS = sum (c + (sigma_n - u) tan phi) l / sum tau l. The normal stresses act through the centre
+    FS = sum (c + (sigma_n - u) tan phi) l / sum tau l (a base in tension: c alone). The normal stresses act through the centre
     of a circle, so for phi = 0 and a field in equilibrium with the weight the FS is Fellenius's and
     Bishop's exactly (moment equilibrium of the mass): whatever its horizontal stresses."""
     ag = -sl.direction * sl.alpha  # the base's angle rising towards +x
