@@ -11,6 +11,7 @@ PACKAGES=(
   python3-pytest python3-numpy python3-matplotlib python3-vtk9   # Python tests, post-processing
   python3-scipy                         # yade_rbsm.safety: connected joints (scipy.sparse.csgraph)
   python3-ezdxf                         # yade_rbsm.io: DXF import and export
+  python3-getfem                        # scripts/fe_stress_fs.py: the elastic FE stress field of a slope (issue 21)
   dpkg-dev                              # the Debian package: dpkg-shlibdeps (cpack DEB), dpkg-deb
   valgrind                              # benchmarks: instruction counts (callgrind; scripts/benchmarks/)
   libgl-dev                             # the qt view's functors (Gl1_*) draw with OpenGL

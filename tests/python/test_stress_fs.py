@@ -185,3 +185,25 @@ def test_stress_field_refuses_ids_that_are_not_body_ids():
         assert what in str(e.value), (bad, str(e.value))
     with pytest.raises(ValueError, match="stress_field"):
         stress_field(O=object(), ids=[3, float("nan")])
+
+
+def test_fe_elastic_field_of_a_slope_is_in_equilibrium_and_feeds_the_stress_method():
+    """scripts/fe_stress_fs.py (GetFEM, plane strain, the stress at triangle centroids): the overburden
+    under the crest, and with phi = 0 the stress FS on a circle equals Bishop's (the field is in
+    equilibrium with the weight: measured 0.44785 against 0.44798), so the comparison it prints rests on a
+    right field."""
+    import importlib.util
+    import os
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "scripts", "fe_stress_fs.py")
+    spec = importlib.util.spec_from_file_location("fe_stress_fs", path)
+    fe = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(fe)
+    from yade_rbsm.le_bridge import StressField
+    L = 10.0  # a 45 deg face, H = 10 m
+    pts, sig = fe.fe_stress([(12, 0), (12 + L, 10), (32 + L, 10), (32 + L, 0)], 0.5, 100e3, 0.3, 20.0)
+    field = StressField(pts, sig, reach=0.5)
+    sxx, syy, sxy = field(30.0, 1.0)  # under the crest, 9 m deep
+    assert syy == pytest.approx(20.0 * 9.0, rel=0.06) and 0.3 * syy < sxx < 0.5 * syy
+    soil = le.Slope([(0, 0), (12, 0), (12 + L, 10), (32 + L, 10)], le.Layer(c=10.0, phi=0.0, gamma=20.0))
+    circle = (10.0, 14.3, 14.2)
+    assert le.stress_circle(soil, circle, field, n=400).fs == pytest.approx(le.bishop_circle(soil, circle, n=400).fs, rel=0.002)
