@@ -52,23 +52,62 @@ def test_undrained_circle_equals_bishop_for_any_field_in_equilibrium(K, circle):
 
 
 def test_frictional_surface_parallel_to_the_ground_gives_the_infinite_slope_ratio():
-    """A long surface parallel to the ground at depth d: (c + gamma d cos² tan phi) / (gamma d sin cos),
-    the closed form of the infinite slope, from the field alone (its short ends aside)."""
+    """A long surface parallel to the ground at depth d normal to it (sigma_n = gamma d cos(beta), tau =
+    gamma d sin(beta) on it): (c + gamma d cos tan phi) / (gamma d sin), the closed form of the infinite
+    slope, from the field alone. 4 km long, so that its two 1 m ends weigh 0.2 %: on the 80 m surface this
+    test had, they moved the FS by 3.7 % (1.097 against 1.0577), which the vertical-depth formula taken at
+    the normal depth (1.0963) hid."""
     d, phi, c = 4.0, 25.0, 10.0
-    soil = _soil(phi, c)
-    off = d / math.cos(BETA)  # vertical offset of the parallel line
+    X = 2000.0
 
     def g(x):
         return x * math.tan(BETA)
 
-    surface = [(-41.0, g(-41.0)), (-40.0, g(-40.0) - off), (40.0, g(40.0) - off), (41.0, g(41.0))]
-    r = le.stress_polyline(soil, surface, infinite_slope_field(0.5), n=8000)
+    soil = le.Slope([(-X - 10, g(-X - 10)), (X + 10, g(X + 10))], le.Layer(c=c, phi=phi, gamma=GAMMA))
+    off = d / math.cos(BETA)  # vertical offset of the parallel line
+    surface = [(-X - 1, g(-X - 1)), (-X, g(-X) - off), (X, g(X) - off), (X + 1, g(X + 1))]
     tp = math.tan(math.radians(phi))
-    closed = (c + GAMMA * d * math.cos(BETA) ** 2 * tp) / (GAMMA * d * math.sin(BETA) * math.cos(BETA))
-    assert r.fs == pytest.approx(closed, rel=0.02), (r.fs, closed)
-    # and the field's K counts once phi > 0 (the test above could not see a K dropped on the way)
-    other = le.stress_polyline(soil, surface, infinite_slope_field(2.0), n=8000)
-    assert other.fs != pytest.approx(r.fs, rel=1e-3)
+    closed = (c + GAMMA * d * math.cos(BETA) * tp) / (GAMMA * d * math.sin(BETA))
+    for K in (0.5, 2.0):  # the stress along the surface (K) does not act on it
+        r = le.stress_polyline(soil, surface, infinite_slope_field(K), n=8000)
+        assert r.fs == pytest.approx(closed, rel=3e-3), (K, r.fs, closed)
+    # the field is total stress: the slope's pore pressure comes off sigma_n, once. ru: u = ru gamma z (z =
+    # off, the vertical depth); a phreatic line parallel to the ground h_w above the surface: u = gamma_w h_w
+    ground = soil.surface
+    for wet, u in ((dict(ru=0.3), 0.3 * GAMMA * off),
+                   (dict(phreatic=[(x, y - off + 2.0) for x, y in ground]), le.GAMMA_W * 2.0)):
+        ws = le.Slope(ground, le.Layer(c=c, phi=phi, gamma=GAMMA), **wet)
+        r = le.stress_polyline(ws, surface, infinite_slope_field(0.5), n=8000)
+        closed_u = (c + (GAMMA * d * math.cos(BETA) - u) * tp) / (GAMMA * d * math.sin(BETA))
+        assert r.fs == pytest.approx(closed_u, rel=3e-3), (wet, r.fs, closed_u)
+
+
+def test_frictional_circle_takes_the_stresses_normal_to_its_base():
+    """phi > 0 on a circle: the lateral stress (K) counts through sigma_n on the inclined bases, and each
+    base's sigma_n, tau are the field's tensor turned to the base (here summed by hand, independently of
+    the slices' sliding-direction bookkeeping), tension bases with c alone."""
+    phi, c = 25.0, 10.0
+    soil = _soil(phi, c)
+    circle = le.Circle(-5.0, 15.0, 20.0)
+    tp = math.tan(math.radians(phi))
+    fs = {}
+
+    def tensile(x, y):  # 30 kPa of isotropic tension added: the shallow bases open
+        return infinite_slope_field(0.3)(x, y) - np.array([30.0, 30.0, 0.0])[:, None]
+
+    for K, field in ((0.3, infinite_slope_field(0.3)), (2.5, infinite_slope_field(2.5)), ("tension", tensile)):
+        r = le.stress_circle(soil, circle, field, n=2000)
+        sl = r.slices
+        sxx, syy, sxy = field(sl.x, sl.y_base)
+        ux, uy = (sl.x - circle.xc) / circle.R, (sl.y_base - circle.yc) / circle.R  # outward: into the ground
+        sn = sxx * ux * ux + syy * uy * uy + 2 * sxy * ux * uy
+        wx, wy = -(sxx * ux + sxy * uy), -(sxy * ux + syy * uy)  # traction on the mass (outward normal u)
+        tau = -(uy * wx - ux * wy)  # against the sliding: clockwise about the centre, towards -x at the bottom
+        expected = np.sum((c + np.maximum(sn, 0) * tp) * sl.l) / np.sum(tau * sl.l)
+        assert r.fs == pytest.approx(expected, rel=1e-9), (K, r.fs, expected)
+        fs[K] = r.fs
+        assert ("in tension" in r.notes) == bool(np.any(sn < 0)), (K, r.notes)
+    assert fs[2.5] > 1.01 * fs[0.3] and "in tension" in r.notes
 
 
 def test_critical_circle_stress_method_and_min_depth():
