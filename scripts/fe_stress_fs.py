@@ -90,7 +90,8 @@ def main():
     field = StressField(pts, sig, reach=a.h)
     deep = field(22.0 + L, 0.5)  # under the crest, 9.5 m deep: about gamma z vertically
     print("FE check: syy %.1f kPa, sxx %.1f kPa at 9.5 m under the crest (gamma z = %.1f)" % (deep[1], deep[0], gamma * 9.5))
-    kul = le.critical_circle(soil, method="stress", stress=field, min_depth=a.min_depth, **search)
+    kul = le.critical_circle(soil, method="stress", stress=field, min_depth=a.min_depth, candidates=[bishop.circle],
+                             **search)
     on_b = le.stress_circle(soil, bishop.circle, field)
     print("slope %s, FE h = %g m (%d triangles), nu %g: stress FS %.4f on %s; on Bishop's circle %.4f; Bishop %.4f "
           "(stress/Bishop %+.1f %%)" % (a.slope, a.h, len(pts), a.poisson, kul.fs, kul.circle, on_b.fs, bishop.fs,

@@ -8,8 +8,9 @@
 # --cj [Pa], --tanphij, divided by F), or table (--table T.json: the joints that give the assembly c'/F,
 # tan phi'/F in a table of simple-shear fits, scripts/simple_shear_table.py, interpolated as Calibration
 # does), or stress (the soil's, ductile: no strength reduction; Kulhawy's stress-based FS of the settled
-# slope's block stresses, critical circle at least --min-depth spacings deep). Prints the Bishop and Spencer
-# FS of the critical circle, the RBSM FS with its bracket, and RESULT <json>.
+# slope's block stresses, critical circle at least --min-depth spacings deep, Bishop's among the
+# candidates). Prints the Bishop and Spencer FS of the critical circle, the RBSM FS with its bracket, and
+# RESULT <json>.
 #   --slope 20   20 deg face, c' = 5 kPa (c'/gamma H = 0.025), phi' = 20 deg
 #   --slope 30   30 deg face, c' = 20 kPa (0.1), phi' = 25 deg
 #
@@ -129,7 +130,8 @@ print("%d blocks, %d joints; gravity stage %s after %d steps, %d joints broken" 
 if args.mode == "stress":
     t1 = time.time()
     field = stress_field()
-    r = le.critical_circle(soil, method="stress", stress=field, min_depth=args.min_depth * args.spacing, **SEARCH)
+    r = le.critical_circle(soil, method="stress", stress=field, min_depth=args.min_depth * args.spacing,
+                           candidates=[crit.circle], **SEARCH)  # (Bishop's circle too: the grid alone missed it)
     on_bishop = le.stress_circle(soil, crit.circle, field)
     wall = time.time() - t0
     print("stress-based FS %.4f on %s (%.1f s search); on Bishop's circle %.4f; Bishop %.4f; %.0f s wall"

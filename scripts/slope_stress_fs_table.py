@@ -4,9 +4,10 @@
 # (two at a time); prints the markdown table and draws docs/slope_stress_fs.png.
 #
 #   /usr/bin/python3 scripts/slope_stress_fs_table.py [--spacings 1,0.5,0.25] [--seeds 1,2,3] [--jobs 2]
-#                                                     [--results R.jsonl] [--png docs/slope_stress_fs.png]
+#                                                     [--results R.jsonl] [--save R.jsonl] [--png docs/slope_stress_fs.png]
 #
-# --results: read the RESULT lines of earlier runs from R.jsonl (one JSON object a line) instead of running.
+# --results: read the RESULT lines of earlier runs from R.jsonl (one JSON object a line) instead of running;
+# --save: write the runs' RESULT objects there (for --results later).
 import argparse
 import json
 import os
@@ -36,6 +37,7 @@ def main():
     ap.add_argument("--seeds", default="1,2,3")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--results", default="")
+    ap.add_argument("--save", default="")
     ap.add_argument("--png", default=os.path.join(ROOT, "docs", "slope_stress_fs.png"))
     a = ap.parse_args()
     if a.results:
@@ -44,6 +46,11 @@ def main():
         jobs = [(s, float(h), int(k)) for h in a.spacings.split(",") for s in SLOPES for k in a.seeds.split(",")]
         with ThreadPoolExecutor(a.jobs) as ex:
             rows = list(ex.map(lambda j: run(*j), jobs))
+        if a.save:
+            with open(a.save, "w") as f:
+                f.write("".join(json.dumps(r) + "\n" for r in rows))
+    if not rows:
+        sys.exit("slope_stress_fs_table.py: no results")
     spacings = sorted({r["spacing"] for r in rows}, reverse=True)
     print("| slope (H = 10 m) | Bishop | Spencer | " + " | ".join("H/%g: stress FS (seeds), blocks" % (10 / h) for h in spacings) + " |")
     print("|---" * (3 + len(spacings)) + "|")

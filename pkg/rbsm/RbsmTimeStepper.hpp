@@ -96,9 +96,9 @@ private:
 	void fullCheck();
 	void addJointsMadeThisStep();
 	Real watchBodies(); // one pass over the bodies: keepBoundAhead and checkMotion of each; returns the travel limit
-	void checkMotion(const Body& b, const Polygon2D& poly, Real& travelDt);
-	void reportMotion(const Body& b, Real motion, Real r); // (the rare path, out of the loop)
-	void keepBoundAhead(const Body& b, const Polygon2D& poly, bool& runCollider);
+	inline void checkMotion(const Body& b, const Polygon2D& poly, Real& travelDt); // (defined, and used, in the .cpp only)
+	void        reportMotion(const Body& b, Real motion, Real r); // (the rare path, out of the loop)
+	inline void keepBoundAhead(const Body& b, const Polygon2D& poly, bool& runCollider);
 	void scaleMasses();
 	Real massScaleOf(size_t id) const;
 	void raiseMassScale(size_t id, Real s);

@@ -890,6 +890,7 @@ def critical_circle(
     base: Optional[float] = None,
     stress=None,
     min_depth: float = 0.0,
+    candidates=(),
 ) -> SearchResult:
     """Grid search for the circle of minimum FS.
 
@@ -905,8 +906,10 @@ def critical_circle(
     whose sliding mass is nowhere deeper than this are skipped (a stress field sampled at block
     centroids does not resolve a slide a block or two deep). Circles on which the field is not finite
     (outside it, e.g. below the blocks) are skipped too; a field of the wrong shape raises its
-    :class:`StressFieldError`. Raises ValueError if no trial circle is valid, with how many were
-    below the base, outside the field or shallower than min_depth.
+    :class:`StressFieldError`. ``candidates``: circles (:class:`Circle` or ``(xc, yc, R)``) tried
+    after the grid (its refinement is the grid's alone), e.g. Bishop's critical circle for the stress
+    method, whose FS over the circles is rough at the block scale: the grid alone missed it. Raises ValueError if no trial circle is valid,
+    with how many were below the base, outside the field or shallower than min_depth.
     """
     meth = method.lower()
     fns = {"fellenius": fellenius_circle, "bishop": bishop_circle, "spencer": spencer_circle}
@@ -935,36 +938,42 @@ def critical_circle(
         base = _finite("base", base)
     xs = _lin(x_range, nx, "x_range")
     ys = _lin(y_range, ny, "y_range")
+    extra = [c if isinstance(c, Circle) else Circle(*c) for c in candidates]
     best = None
-    tried = valid = below = outside = shallow = 0
+    count = dict(tried=0, valid=0, below=0, outside=0, shallow=0)
+
+    def trial(xc, yc, R):
+        nonlocal best
+        count["tried"] += 1
+        if R <= 0:
+            return
+        try:
+            r = fn(slope, Circle(xc, yc, R), n)
+        except StressFieldError as e:  # a field of the wrong shape fails on every circle: say so
+            if not e.outside:
+                raise
+            count["outside"] += 1
+            return
+        except ValueError:
+            return
+        if base is not None and _lowest(r) < base - slope.tol:
+            count["below"] += 1
+            return
+        if min_depth > 0 and _depth(slope, r) < min_depth:
+            count["shallow"] += 1
+            return
+        if not (r.fs > 0 and math.isfinite(r.fs)):
+            return
+        count["valid"] += 1
+        if best is None or r.fs < best.fs:
+            best = r
+
     for level in range(refine + 1):
         for xc in xs:
             for yc in ys:
                 rs = [math.hypot(xc - tx, yc - ty)] if through is not None else radii
                 for R in rs:
-                    tried += 1
-                    if R <= 0:
-                        continue
-                    try:
-                        r = fn(slope, Circle(xc, yc, R), n)
-                    except StressFieldError as e:  # a field of the wrong shape fails on every circle: say so
-                        if not e.outside:
-                            raise
-                        outside += 1
-                        continue
-                    except ValueError:
-                        continue
-                    if base is not None and _lowest(r) < base - slope.tol:
-                        below += 1
-                        continue
-                    if min_depth > 0 and _depth(slope, r) < min_depth:
-                        shallow += 1
-                        continue
-                    if not (r.fs > 0 and math.isfinite(r.fs)):
-                        continue
-                    valid += 1
-                    if best is None or r.fs < best.fs:
-                        best = r
+                    trial(xc, yc, R)
         if best is None:
             break
         if level < refine:
@@ -974,9 +983,11 @@ def critical_circle(
             hx, hy = dx * (len(xs) - 1) / 2, dy * (len(ys) - 1) / 2
             xs = np.linspace(cx - hx, cx + hx, len(xs))
             ys = np.linspace(cy - hy, cy + hy, len(ys))
+    for c in extra:  # after the grid: its refinement follows the grid alone, so a candidate only ever lowers the FS
+        trial(c.xc, c.yc, c.R)
     if best is None:
-        why = "".join([f"; {below} of them dip below the firm base y = {base}" if below else "",
-                       f"; {outside} run outside the stress field" if outside else "",
-                       f"; {shallow} are shallower than min_depth = {min_depth:g}" if shallow else ""])
-        raise ValueError(f"no valid trial circle in the search space ({tried} tried{why})")
-    return SearchResult(meth, best, best.surface, tried, valid, tried - valid)
+        why = "".join([f"; {count['below']} of them dip below the firm base y = {base}" if count["below"] else "",
+                       f"; {count['outside']} run outside the stress field" if count["outside"] else "",
+                       f"; {count['shallow']} are shallower than min_depth = {min_depth:g}" if count["shallow"] else ""])
+        raise ValueError(f"no valid trial circle in the search space ({count['tried']} tried{why})")
+    return SearchResult(meth, best, best.surface, count["tried"], count["valid"], count["tried"] - count["valid"])

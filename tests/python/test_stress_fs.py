@@ -246,3 +246,45 @@ def test_fe_elastic_field_of_a_slope_is_in_equilibrium_and_feeds_the_stress_meth
     soil = le.Slope([(0, 0), (12, 0), (12 + L, 10), (32 + L, 10)], le.Layer(c=10.0, phi=0.0, gamma=20.0))
     circle = (10.0, 14.3, 14.2)
     assert le.stress_circle(soil, circle, field, n=400).fs == pytest.approx(le.bishop_circle(soil, circle, n=400).fs, rel=0.002)
+
+
+def test_candidate_circles_are_tried_besides_the_grid():
+    """critical_circle(candidates=...): a circle off the grid (e.g. Bishop's, for the stress method) is tried
+    after the grid and kept where it is lower; the grid's search, refinement included, is unchanged (tried
+    first, the candidates moved the refinement elsewhere and raised the FS of 8 of 36 study runs)."""
+    soil = _soil(20.0)
+    field = infinite_slope_field(0.5)
+    kw = dict(x_range=(-20, 20), y_range=(10, 40), nx=3, ny=3, r_range=(8, 50), nr=3)
+    grid = le.critical_circle(soil, method="stress", stress=field, **kw)
+    fine = le.critical_circle(soil, method="stress", stress=field, x_range=(-20, 20), y_range=(10, 40), nx=9, ny=9,
+                              r_range=(8, 50), nr=15)
+    assert fine.fs < grid.fs  # the coarse grid misses it
+    both = le.critical_circle(soil, method="stress", stress=field, candidates=[fine.circle, (0.0, 20.0, 22.0)], **kw)
+    assert both.fs == fine.fs and both.circle == fine.circle
+    assert both.n_tried == grid.n_tried + 2
+    assert le.critical_circle(soil, method="stress", stress=field, candidates=[(50.0, 80.0, 1.0)], **kw).fs == grid.fs
+    refined = dict(kw, refine=2)
+    alone = le.critical_circle(soil, method="stress", stress=field, **refined)
+    for cand in [(alone.circle.xc + 3.0, alone.circle.yc + 3.0, alone.circle.R + 3.0), (0.0, 20.0, 22.0)]:
+        fs = le.stress_circle(soil, cand, field).fs
+        assert le.critical_circle(soil, method="stress", stress=field, candidates=[cand], **refined).fs == min(fs, alone.fs)
+    assert le.stress_circle(soil, (0.0, 20.0, 22.0), field).fs > alone.fs  # (one of them higher)
+    # a candidate better than the coarse grid's first level but worse than its refinement, far from the latter:
+    # tried first, it would take the refinement to its own neighbourhood
+    first = le.critical_circle(soil, method="stress", stress=field, **kw).fs
+    lure = None
+    for xc in np.linspace(-20, 20, 9):
+        for yc in np.linspace(10, 40, 7):
+            for R in np.linspace(8, 50, 15):
+                if math.hypot(xc - alone.circle.xc, yc - alone.circle.yc) < 8:
+                    continue
+                try:
+                    fs = le.stress_circle(soil, (xc, yc, R), field).fs
+                except ValueError:
+                    continue
+                if alone.fs < fs < first and (lure is None or fs < lure[0]):
+                    lure = (fs, (xc, yc, R))
+    assert lure is not None
+    assert le.critical_circle(soil, method="stress", stress=field, candidates=[lure[1]], **refined).fs == alone.fs
+    with pytest.raises(ValueError, match="radius"):
+        le.critical_circle(soil, method="stress", stress=field, candidates=[(0.0, 20.0, -1.0)], **kw)
