@@ -7,18 +7,16 @@
 #
 #   /usr/bin/python3 scripts/fe_stress_fs.py [--slope 45|gl|20|30] [--h 0.25] [--poisson 0.3]
 import argparse
-import math
 import os
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "py"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from yade_rbsm import limit_equilibrium as le  # noqa: E402
 from yade_rbsm.le_bridge import StressField  # noqa: E402
-
-SLOPES = {"gl": (math.degrees(math.atan(0.5)), 10.0, 20.0), "45": (45.0, 10.0, 40.0), "20": (20.0, 5.0, 20.0),
-          "30": (30.0, 20.0, 25.0)}  # face angle [deg], c' [kPa], phi' [deg] (scripts/slope_fs_study.py's)
+from reference_slopes import GAMMA, H, SLOPES, face_length, search, soil as soil_of  # noqa: E402
 
 
 def mesh_of(poly, h):
@@ -26,16 +24,17 @@ def mesh_of(poly, h):
     from scipy.spatial import Delaunay
     from matplotlib.path import Path
     P = np.asarray(poly, dtype=float)
+    outline = Path(P)
     pts = [P[i] + t * (P[(i + 1) % len(P)] - P[i]) for i in range(len(P))
            for t in np.linspace(0, 1, max(2, int(np.ceil(np.linalg.norm(P[(i + 1) % len(P)] - P[i]) / h))) + 1)[:-1]]
     x0, y0 = P.min(axis=0)
     x1, y1 = P.max(axis=0)
     gx, gy = np.meshgrid(np.arange(x0 + h / 2, x1, h), np.arange(y0 + h / 2, y1, h))
     grid = np.column_stack([gx.ravel(), gy.ravel()])
-    inside = Path(P).contains_points(grid, radius=-0.3 * h) & Path(P).contains_points(grid)
+    inside = outline.contains_points(grid, radius=-0.3 * h) & outline.contains_points(grid)
     pts = np.vstack([np.array(pts), grid[inside]])
     tri = Delaunay(pts).simplices
-    keep = Path(P).contains_points(pts[tri].mean(axis=1))
+    keep = outline.contains_points(pts[tri].mean(axis=1))
     return pts, tri[keep]
 
 
@@ -79,19 +78,16 @@ def main():
     ap.add_argument("--poisson", type=float, default=0.3)
     ap.add_argument("--min-depth", type=float, default=1.0, help="least depth of a circle [m]")
     a = ap.parse_args()
-    beta, c, phi = SLOPES[a.slope]
-    H, gamma = 10.0, 20.0
-    L = H / math.tan(math.radians(beta))
-    surface = [(0, 0), (12, 0), (12 + L, H), (32 + L, H)]
-    soil = le.Slope(surface, le.Layer(c=c, phi=phi, gamma=gamma))
-    search = dict(x_range=(5, 20 + L), y_range=(10, 50), nx=12, ny=12, refine=3, base=0.0, r_range=(5, 60), nr=19)
-    bishop = le.critical_circle(soil, **search)
+    L, gamma = face_length(a.slope), GAMMA
+    soil = soil_of(a.slope)
+    grid = search(a.slope)
+    bishop = le.critical_circle(soil, **grid)
     pts, sig = fe_stress([(12, 0), (12 + L, H), (32 + L, H), (32 + L, 0)], a.h, 100e3, a.poisson, gamma)  # kPa units
     field = StressField(pts, sig, reach=a.h)
     deep = field(22.0 + L, 0.5)  # under the crest, 9.5 m deep: about gamma z vertically
     print("FE check: syy %.1f kPa, sxx %.1f kPa at 9.5 m under the crest (gamma z = %.1f)" % (deep[1], deep[0], gamma * 9.5))
     kul = le.critical_circle(soil, method="stress", stress=field, min_depth=a.min_depth, candidates=[bishop.circle],
-                             **search)
+                             **grid)
     on_b = le.stress_circle(soil, bishop.circle, field)
     print("slope %s, FE h = %g m (%d triangles), nu %g: stress FS %.4f on %s; on Bishop's circle %.4f; Bishop %.4f "
           "(stress/Bishop %+.1f %%)" % (a.slope, a.h, len(pts), a.poisson, kul.fs, kul.circle, on_b.fs, bishop.fs,

@@ -33,10 +33,9 @@ from yade_rbsm.calibration import calibrate
 from yade_rbsm.safety import stress_field
 from yade_rbsm.strength_reduction import strength_reduction
 
-SLOPES = {"gl": dict(beta=math.degrees(math.atan(0.5)), c=10e3, phi=20.0),
-          "45": dict(beta=45.0, c=10e3, phi=40.0),
-          "20": dict(beta=20.0, c=5e3, phi=20.0),
-          "30": dict(beta=30.0, c=20e3, phi=25.0)}
+# (under yade -x, __file__ is yade's own script: the scripts folder from the package's place)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(yr.__file__)))), "scripts"))
+from reference_slopes import GAMMA, H, SLOPES, ground, search, soil as soil_of  # noqa: E402
 ap = argparse.ArgumentParser()
 ap.add_argument("--slope", choices=sorted(SLOPES), default="gl")
 ap.add_argument("--mode", choices=["raw", "ductile", "calibrated", "joints", "table", "stress"], default="raw")
@@ -61,20 +60,18 @@ ap.add_argument("--d-fail", type=float, default=0.1, help="strength reduction's 
 ap.add_argument("--max-steps", type=int, default=8000, help="steps of a trial (x 3 without density scaling)")
 args = ap.parse_args(sys.argv[1:])
 
-H, gamma = 10.0, 20e3
+gamma = GAMMA * 1e3  # N/m3 (the RBSM's SI units)
 young, poisson = args.young, args.poisson
-s = SLOPES[args.slope]
-c, phi = s["c"], math.radians(s["phi"])
-L = H / math.tan(math.radians(s["beta"]))
-surface = [(0, 0), (12, 0), (12 + L, H), (32 + L, H)]
+_, c_kpa, phi_deg, _ = SLOPES[args.slope]
+c, phi = c_kpa * 1e3, math.radians(phi_deg)
+surface = ground(args.slope)
 t0 = time.time()
 
-soil = le.Slope(surface, le.Layer(c=c / 1e3, phi=s["phi"], gamma=gamma / 1e3))
-SEARCH = dict(x_range=(5, 20 + L), y_range=(10, 50), nx=12, ny=12, refine=3, base=0.0, r_range=(5, 60), nr=19)
+soil = soil_of(args.slope)
+SEARCH = search(args.slope)
 crit = le.critical_circle(soil, **SEARCH)
 spencer = le.spencer_circle(soil, crit.circle)
 print("limit equilibrium: Bishop %.3f, Spencer %.3f on %s" % (crit.fs, spencer.fs, crit.circle))
-
 
 
 class ScaledCalibration:

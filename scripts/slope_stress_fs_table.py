@@ -16,9 +16,11 @@ import sys
 from concurrent.futures import ThreadPoolExecutor
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SLOPES = ["20", "gl", "30", "45"]
-LABEL = {"20": "20°, c′/γH 0.025, φ′ 20°", "gl": "26.6° (2:1), 0.05, 20° (Griffiths & Lane)",
-         "30": "30°, 0.1, 25°", "45": "45°, 0.05, 40°"}
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+from reference_slopes import SLOPES as REFERENCE  # noqa: E402
+
+SLOPES = list(REFERENCE)
+LABEL = {name: v[3] for name, v in REFERENCE.items()}
 
 
 def run(slope, spacing, seed):

@@ -1,0 +1,39 @@
+# The homogeneous c'-phi' slopes of issue 21 (docs/slope_factor_of_safety.md), shared by
+# scripts/slope_fs_study.py (RBSM), scripts/fe_stress_fs.py (finite elements) and
+# scripts/slope_stress_fs_table.py: H = 10 m, gamma = 20 kN/m3, a firm base at toe level (y = 0), the face
+# rising from x = 12 m, a 20 m crest. Plain Python, no YADE.
+import math
+
+H = 10.0  # m
+GAMMA = 20.0  # kN/m3
+# name: face angle [deg], c' [kPa], phi' [deg], label (c'/gamma H)
+SLOPES = {
+    "20": (20.0, 5.0, 20.0, "20°, c′/γH 0.025, φ′ 20°"),
+    "gl": (math.degrees(math.atan(0.5)), 10.0, 20.0, "26.6° (2:1), 0.05, 20° (Griffiths & Lane)"),
+    "30": (30.0, 20.0, 25.0, "30°, 0.1, 25°"),
+    "45": (45.0, 10.0, 40.0, "45°, 0.05, 40°"),
+}
+
+
+def face_length(name):
+    """Horizontal length of the face [m]."""
+    return H / math.tan(math.radians(SLOPES[name][0]))
+
+
+def ground(name):
+    """The ground polyline (for limit_equilibrium.Slope and the builders)."""
+    L = face_length(name)
+    return [(0, 0), (12, 0), (12 + L, H), (32 + L, H)]
+
+
+def search(name):
+    """critical_circle's grid (centres over the face, circles above the base)."""
+    return dict(x_range=(5, 20 + face_length(name)), y_range=(10, 50), nx=12, ny=12, refine=3, base=0.0,
+                r_range=(5, 60), nr=19)
+
+
+def soil(name):
+    """The limit_equilibrium.Slope of the slope (kPa, kN/m3, degrees)."""
+    from yade_rbsm import limit_equilibrium as le
+    beta, c, phi, _ = SLOPES[name]
+    return le.Slope(ground(name), le.Layer(c=c, phi=phi, gamma=GAMMA))
