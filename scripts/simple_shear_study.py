@@ -1,6 +1,7 @@
 # Simple-shear tests (yade_rbsm.calibration.simple_shear_test) of the 45 deg slope's biaxially calibrated joints
 # (c_j 9219 Pa, tan phi_j 0.16078; both x --k), 24 x 6 blocks of 1 m unless --lb/--hb, at --sn kPa; prints the
-# peak and 6-8 % H tau, the middle-half tau/sigma and the fits (issue 21, docs/slope_factor_of_safety.md).
+# peak and 6-8 % H tau, the middle-half tau/sigma and the fits (issue 21, docs/slope_factor_of_safety.md);
+# with --json FILE also written there, with the curves.
 #
 #   build/yade-rbsm -j1 -n -x scripts/simple_shear_study.py --sn 50,100,150 --k 1.41
 import math, sys, json, time
@@ -18,6 +19,7 @@ ap.add_argument("--endp", type=float, default=0.0)
 ap.add_argument("--lb", type=int, default=24)
 ap.add_argument("--hb", type=int, default=6)
 ap.add_argument("--verbose", action="store_true")
+ap.add_argument("--json", default="", help="write the runs (and their curves) to this file")
 a = ap.parse_args(sys.argv[1:])
 cj, tj = a.k * a.cj, a.k * a.tj
 out = []
@@ -37,4 +39,6 @@ if len(out) > 1:
     for key, sk in (("peak_mid", "sig_mid_peak"), ("large_mid", "sig_mid_large")):
         c, phi = fit_coulomb([o[sk] for o in out], [o[key] for o in out])
         print("FIT %s (vs its own sigma): c = %.2f kPa, phi = %.2f deg" % (key, c / 1e3, math.degrees(phi)))
-json.dump(dict(k=a.k, cj=cj, tj=tj, runs=out), open("ss_k%.4f_s%d_e%.2f_%dx%d_%s.json" % (a.k, a.seed, a.endp, a.lb, a.hb, a.sn.replace(",", "_")), "w"))
+if a.json:
+    with open(a.json, "w") as f:
+        json.dump(dict(k=a.k, seed=a.seed, endp=a.endp, lb=a.lb, hb=a.hb, cj=cj, tj=tj, runs=out), f)
