@@ -1,16 +1,17 @@
 """The scene part of a block slope (needs YADE, imported inside the functions, so that slope.py,
 which re-exports these names, still loads without it): the blocks of a :class:`slope.SlopeBlocks`
-into O.bodies, bonding and breaking joints (crack, crack polylines), the unbalanced-force ratio and
-the gravity stage. Import these from ``yade_rbsm.slope``."""
+into O.bodies, bonding and breaking joints (crack, crack polylines), joint sets with their own
+strength, the unbalanced-force ratio and the gravity stage. Import these from ``yade_rbsm.slope``."""
 import math
 
-__all__ = ["build_scene", "break_crack", "break_joints", "bond_and_break", "unbalanced_ratio", "settle"]
+__all__ = ["build_scene", "break_crack", "joints_on", "break_joints", "set_joint_strength", "bond_and_break",
+           "unbalanced_ratio", "settle"]
 
 
 def build_scene(sb, material=None, thickness=1.0):
     """Append the blocks of *sb* to O.bodies (slope blocks free, foundation and walls fixed); sets
-    ``Block.id`` and ``sb.ids`` (``sb.ids[k]`` is the id of ``sb.blocks[k]``) and each body's refPos (for
-    displacements). Returns the ids. The ids follow a Z-order curve over the blocks' centroids
+    ``Block.id`` and ``sb.ids`` (``sb.ids[k]`` is the id of ``sb.blocks[k]``) and each body's refPos and refOri (for
+    displacements and rotations since it was built). Returns the ids. The ids follow a Z-order curve over the blocks' centroids
     (geometry.z_order), not sb.blocks' order: neighbours get near ids, so that the joints sorted by ids
     (RbsmTimeStepper.orderInteractions) find both blocks near each other in memory (a 14 404-block
     Voronoi slope, whose builder numbers blocks at random: 21 % less time per step).
@@ -32,6 +33,7 @@ def build_scene(sb, material=None, thickness=1.0):
     for b, i in zip(order, O.bodies.append(bodies)):
         b.id = i
         O.bodies[i].state.refPos = O.bodies[i].state.pos
+        O.bodies[i].state.refOri = O.bodies[i].state.ori
     sb.ids = [b.id for b in sb.blocks]
     return sb.ids
 
@@ -55,36 +57,98 @@ def break_crack(sb, tol=None, counted=None):
     return n
 
 
-def break_joints(polylines, tol=None, counted=None):
-    """Break (RbsmPhys.breakJoint) every joint whose contact segment lies on a segment of one of
-    the *polylines* (both ends within *tol*, default 1e-6 x the scene size; length > *tol*: corner
-    contacts at a point of the polyline stay) with its two blocks on opposite sides of it. Returns
-    the number broken (of those for which *counted*(I) is true, if given)."""
-    from yade import O
+def joints_on(polylines, tol=None):
+    """The real joints whose contact segment lies on a segment of one of the *polylines* (both ends
+    within *tol*, default 1e-6 x the scene size; length > *tol*: corner contacts at a point of the
+    polyline are not on it) with their two blocks on opposite sides of it: the joints a cut along
+    the polylines made (builders' ``joints=`` and ``cracks=``). Tested in the blocks' reference
+    configuration (State.refPos, refOri: where build_scene put them), so that a settled slope's joints
+    are found on the polylines it was cut along."""
+    from yade import O, Vector3
     from . import omega
     from .geometry import point_segment_distance
     segs = [(a, b) for l in polylines for a, b in zip(l[:-1], l[1:])]
     if not segs:
-        return 0
+        return []
     if tol is None:
         size = max(max(abs(c) for s in segs for p in s for c in p), 1.0)
         tol = 1e-6 * size
-    n = 0
+    out = []
     for I in omega.joints(O):
-        p0, p1 = (I.geom.p0[0], I.geom.p0[1]), (I.geom.p1[0], I.geom.p1[1])
+        s1 = O.bodies[I.id1].state
+        back = s1.refOri * s1.ori.conjugate()  # current -> reference pose of block 1
+
+        def ref(x):
+            v = s1.refPos + back * (Vector3(x[0], x[1], 0) - s1.pos)
+            return v[0], v[1]
+        p0, p1 = ref(I.geom.p0), ref(I.geom.p1)
         if math.hypot(p1[0] - p0[0], p1[1] - p0[1]) <= tol:
             continue
-        c1, c2 = O.bodies[I.id1].state.pos, O.bodies[I.id2].state.pos
+        c1, c2 = s1.refPos, O.bodies[I.id2].state.refPos
 
         def opposite(a, b):
             dx, dy = b[0] - a[0], b[1] - a[1]
             s1 = dx * (c1[1] - a[1]) - dy * (c1[0] - a[0])
             s2 = dx * (c2[1] - a[1]) - dy * (c2[0] - a[0])
             return s1 * s2 < 0
-        if any(point_segment_distance(p0, a, b) <= tol and point_segment_distance(p1, a, b) <= tol and opposite(a, b) for a, b in segs):
-            I.phys.breakJoint()
-            n += 1 if counted is None or counted(I) else 0
+        if any(point_segment_distance(p0, a, b) <= tol and point_segment_distance(p1, a, b) <= tol and opposite(a, b)
+               for a, b in segs):
+            out.append(I)
+    return out
+
+
+def break_joints(polylines, tol=None, counted=None):
+    """Break (RbsmPhys.breakJoint) every joint on the *polylines* (:func:`joints_on`). Returns the
+    number broken (of those for which *counted*(I) is true, if given)."""
+    n = 0
+    for I in joints_on(polylines, tol):
+        I.phys.breakJoint()
+        n += 1 if counted is None or counted(I) else 0
     return n
+
+
+def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=None, ductile=None, tol=None):
+    """A joint set with its own strength: every joint on the *polylines* (:func:`joints_on`; e.g. a
+    bedding plane given to a builder's ``joints=``) gets *cohesion* [Pa], tan(*friction_angle* [rad])
+    and *tensile_strength* [Pa] (default: the Mohr-Coulomb apex cohesion / tan(friction_angle); a
+    cohesive joint without tensile strength loses its cohesion at the first round-off tension), and
+    RbsmPhys.ductile if *ductile* is given. The other joints keep what their blocks' materials gave.
+    Call it after :func:`bond_and_break` (intact points keep their cohesion, broken ones stay broken);
+    strength_reduction then reduces these strengths as any joint's. Contacts made later (a block
+    sliding onto a new neighbour) take their blocks' materials. Returns the number of joints set;
+    ValueError if a polyline carries no joint (it misses the blocks' cuts) or a value is out of range."""
+    from .checks import number
+    from .geometry import points
+    who = "set_joint_strength"
+    polylines = [points("%s: polylines[%d]" % (who, k), l, 2) for k, l in enumerate(polylines)]
+    if not polylines:
+        raise ValueError("%s: no polylines given" % who)
+    cohesion = number(who, "cohesion", cohesion, 0)
+    friction_angle = number(who, "friction_angle", friction_angle, 0, 0.5 * math.pi, high_open=True)
+    if tensile_strength is None:
+        if cohesion > 0 and friction_angle == 0:
+            raise ValueError("%s: give tensile_strength for a cohesive joint without friction (the default "
+                             "cohesion / tan(friction_angle) is infinite)" % who)
+        tensile_strength = cohesion / math.tan(friction_angle) if cohesion > 0 else 0.0
+    tensile_strength = number(who, "tensile_strength", tensile_strength, 0)
+    found = [joints_on([l], tol) for l in polylines]
+    for k, js in enumerate(found):
+        if not js:
+            raise ValueError("%s: no joint lies on polylines[%d] %s (give the polyline the blocks were cut along, "
+                             "after build_scene and bond_and_break)" % (who, k, polylines[k]))
+    tan_phi = math.tan(friction_angle)
+    done = set()
+    for js in found:
+        for I in js:
+            if (I.id1, I.id2) in done:
+                continue
+            done.add((I.id1, I.id2))
+            I.phys.cohesion = cohesion
+            I.phys.tanPhi = tan_phi
+            I.phys.tensileStrength = tensile_strength
+            if ductile is not None:
+                I.phys.ductile = bool(ductile)
+    return len(done)
 
 
 def bond_and_break(sb):
