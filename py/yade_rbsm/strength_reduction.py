@@ -35,7 +35,9 @@ Procedure (:func:`strength_reduction`)
 The reference state is checked: one step from it at its own strengths (then reloaded) gives its
 unbalanced-force ratio (``SRResult.reference_ratio``). Above ``reference_tol`` (default 0.5; 1 is
 free fall) nothing can be bracketed: ValueError naming it, instead of trials that all fail. A
-smaller one is reported (a slope with FS < 1 is out of equilibrium at its real strengths). With a *calibration*
+smaller one is reported (a slope with FS < 1 is out of equilibrium at its real strengths). Its
+blocks' rotation since they were built is checked too (``reference_rotation``, default 0.2 rad):
+columns that toppled while settling are a collapsed pile, not the slope to reduce. With a *calibration*
 (:class:`yade_rbsm.calibration.Calibration`) the strength reduced is the *assembly's*: trial F gives
 every joint and material ``calibration.joint_strength(c/F, tanφ/F)`` of the soil's c, tanφ
 (*soil*), instead of dividing the joints' own. *png*: a path prefix; the blocks coloured by their
@@ -208,7 +210,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
 def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None, tol=1e-4, d_fail=0.05,
                        max_steps=5000, check=100, damping=0.7, reduce_tensile=False, verbose=True,
                        mark="rbsm_srm_reference", density_scaling=False, mass_fraction=0.01, reference_tol=0.5,
-                       calibration=None, soil=None, png=None):
+                       calibration=None, soil=None, png=None, reference_rotation=0.2):
     """Factor of safety by strength reduction on the current scene (see the module docstring).
     *density_scaling*: RbsmTimeStepper.densityScaling in every trial (fewer steps to the same
     equilibrium; restored at the end).
@@ -216,7 +218,11 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     *ids*: monitored blocks for the runaway criterion (default: all free blocks). Returns an
     :class:`SRResult`; raises RuntimeError if no bracket is found within *max_trials* trials.
     *mass_fraction*, *reference_tol*, *calibration* with *soil* = (c [Pa], φ [rad]) and *png*: see
-    the module docstring."""
+    the module docstring. *reference_rotation* [rad]: the largest rotation of a monitored block since
+    it was built (State.refOri) that the reference state may have; a slope whose blocks toppled or
+    tumbled while settling is not the slope to reduce: ValueError naming the block, when the blocks
+    rotated more weigh more than *mass_fraction* of the monitored mass (fewer are reported as local;
+    None: no check)."""
     from yade import O
     where = "strength_reduction"
     start, tol, d_fail, max_steps, check, damping = _trial_args(where, start, tol, d_fail, max_steps, check, damping)
@@ -232,6 +238,9 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
                                                                     math.pi / 2, low_open=True, high_open=True))
     if not (ids if ids is not None else _free_ids()):
         raise ValueError("strength_reduction: no free blocks to monitor (empty scene, or every block fixed)")
+    if reference_rotation is not None:
+        reference_rotation = number(where, "reference_rotation", reference_rotation, 0, low_open=True)
+        _check_rotation(ids if ids is not None else _free_ids(), reference_rotation, mass_fraction, verbose)
     from .scene import time_stepper
     stepper = time_stepper()
     if density_scaling and stepper is None:
@@ -307,6 +316,35 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
         if stepper is not None:
             stepper.densityScaling = old_scaling
     return SRResult(0.5 * (lo + hi), lo, hi, trials, crit, r0)
+
+
+def _check_rotation(ids, limit, mass_fraction, verbose):
+    """ValueError if the blocks of *ids* that have rotated by more than *limit* [rad] since they were
+    built weigh more than *mass_fraction* of them (the runaway criterion's share: a lone block that
+    rolled off the face is local, and only reported)."""
+    from yade import O
+    turned, total, mass = [], 0.0, 0.0
+    for i in ids:
+        s = O.bodies[i].state
+        angle = abs((s.refOri.conjugate() * s.ori).toAxisAngle()[1])
+        angle = min(angle, 2 * math.pi - angle)
+        total += s.mass
+        if angle > limit:
+            turned.append((angle, i))
+            mass += s.mass
+    if not turned:
+        return
+    angle, k = max(turned)
+    s = O.bodies[k].state
+    what = ("%d block(s) weighing %.2g %% of the monitored mass have rotated by more than reference_rotation = %.3g rad "
+            "since they were built (State.refOri), block #%d by %.1f deg (it moved %.3g m)"
+            % (len(turned), 100 * mass / total, limit, k, math.degrees(angle), (s.pos - s.refPos).norm()))
+    if total > 0 and mass > mass_fraction * total:
+        raise ValueError("strength_reduction: the reference state is not the slope that was built: %s: it toppled or "
+                         "tumbled while settling (settle with stronger joints, a shorter step or stiffer blocks), or "
+                         "pass reference_rotation=None to reduce this state as it is" % what)
+    if verbose:
+        print("  strength reduction: local in the reference state: %s" % what, flush=True)
 
 
 def _reference_ratio(mark, ids):

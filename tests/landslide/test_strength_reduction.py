@@ -26,3 +26,17 @@ def test_block_on_plane(psi):
     assert ntrials <= 30
     assert moved < 1e-9  # reference state restored
     assert tanphi == pytest.approx(math.tan(math.radians(30)), rel=1e-8)
+
+
+def test_a_reference_state_that_toppled_while_settling_is_refused():
+    """A new user's columns toppled 4 m while settling and strength reduction reported an FS of the
+    collapsed pile without a word: the blocks' rotation since they were built is now checked."""
+    p = run_yade(os.path.join(HERE, "sr_toppled.py"), cwd=HERE, timeout=240)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    settled = [l for l in p.stdout.splitlines() if l.startswith("SETTLED")][0].split()
+    assert float(settled[-1]) > 0.5, settled  # toppled: rotated by more than 0.5 rad (the scene still does)
+    refused = [l for l in p.stdout.splitlines() if l.startswith("REFUSED")]
+    assert refused, p.stdout[-2000:]
+    msg = refused[0]
+    assert "strength_reduction: the reference state" in msg and "rotated" in msg and "#" in msg, msg
+    assert "reference_rotation" in msg, msg  # says how to accept it
