@@ -55,6 +55,15 @@ namespace {
 		p.contactLength = g.length;
 	}
 
+	// The bond is the segment the joint was made on: it shrinks with the segment, never grows (a corner
+	// bonded at a point and slid into an edge contact would otherwise carry c over the whole edge).
+	// Returns the bonded share of the current segment, which scales c and σt of the intact points.
+	inline Real bondedFraction(RbsmPhys& p, const RbsmGeom& g)
+	{
+		if (p.bondedLength < 0 || g.length < p.bondedLength) p.bondedLength = g.length;
+		return g.length > p.bondedLength ? p.bondedLength / g.length : Real(1);
+	}
+
 	// What the points of a step share, and what they sum: the force on body 2 and its moment about p0
 	// (the torques about the two centroids follow: M_c = M_p0 + (p0 − c) × F), energies, forces.
 	struct JointStep {
@@ -91,7 +100,7 @@ namespace {
 			const Real dn = p.dampingCoefficient * vn * a;
 			Real       ds = st.slipping ? 0 : -p.dampingCoefficient * vs * a;
 			// the spring and the dashpot together stay within the Mohr-Coulomb strength
-			const Real limit = (st.intact ? p.cohesion : 0) * a + std::max<Real>(0, fn + dn) * p.tanPhi;
+			const Real limit = (st.intact ? j.params.cohesion : 0) * a + std::max<Real>(0, fn + dn) * p.tanPhi;
 			ds               = std::clamp(fs + ds, -limit, limit) - fs;
 			fn += dn;
 			fs += ds;
@@ -105,7 +114,7 @@ namespace {
 		sum.dissipated += r.dissipated;
 		sum.normalForce += r.normalForce;
 		sum.shearForce += r.shearForce;
-		sum.strength += ((st.intact ? p.cohesion : 0) + std::max<Real>(0, r.normalTraction) * p.tanPhi) * a;
+		sum.strength += ((st.intact ? j.params.cohesion : 0) + std::max<Real>(0, r.normalTraction) * p.tanPhi) * a;
 	}
 }
 
@@ -128,8 +137,9 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	// reduced mass, 2·sqrt(kn·A·m), spread over the joint area (traction per velocity).
 	const bool damped    = dampingRatio > 0 && g.reducedMass > 0 && area > 0;
 	p.dampingCoefficient = damped ? dampingRatio * 2 * std::sqrt(p.kn * area * g.reducedMass) / area : 0;
-	const JointStep j { rbsm::JointParams { p.kn, p.ks, p.cohesion, p.tanPhi, p.tensileStrength, p.ductile }, area, damped, g.kinematics(), g.tangent(), g.p1 - g.p0,
-		            scene->dt, scene->trackEnergy };
+	const Real bonded = bondedFraction(p, g);
+	const JointStep j { rbsm::JointParams { p.kn, p.ks, bonded * p.cohesion, p.tanPhi, bonded * p.tensileStrength, p.ductile }, area, damped, g.kinematics(),
+		            g.tangent(), g.p1 - g.p0, scene->dt, scene->trackEnergy };
 	spreadShearOverGrowth(p, g, n);
 	JointSums sum;
 	for (int k = 0; k < n; k++)

@@ -114,6 +114,7 @@ public:
 		((Real, shearForce, 0, Attr::readonly, "Resultant shear force of the joint [N] along the contact tangent, Σ τ_k a_k."))
 		((Real, strength, 0, Attr::readonly, "Shear strength of the joint at the current normal stress, Σ (c_k + σn_k tanφ) a_k [N] (c_k = 0 where broken)."))
 		((Real, plasticDissipation, 0, Attr::readonly, "Energy dissipated by slip on this joint since it formed [J]."))
+		((Real, bondedLength, -1, Attr::readonly, "Length of contact segment that is bonded [m]: the segment's length when the law first met the joint, never more than the segment's length since. Cohesion and tensile strength of the intact points act over this length, spread over the segment: a joint bonded at a corner that grows into an edge contact (a block sliding along a neighbour's face) gains no bond. -1: not yet met."))
 		((Real, contactLength, 0, Attr::readonly, "Length of the contact segment at the last step of the law [m]: where a frictional contact grows, the new part carries no shear yet, so the shear tractions of its broken points are scaled by old/new length (without it a rocking or tipping block gained energy from tractions spread over a growing area)."))
 		((std::vector<Real>, shearTraction, , Attr::hidden, "Saved form of the shear traction τ_k of each point [Pa] (see the property of that name)."))
 		((std::vector<Real>, normalTraction, , Attr::hidden, "Saved form of the normal traction σn_k of each point [Pa]."))
