@@ -1,6 +1,6 @@
 """PNG snapshots of an RBSM scene (matplotlib, Agg): blocks coloured by displacement magnitude
-(|pos - refPos|), fixed blocks grey, failed joints red (joints with no intact integration point
-that are open or slipping somewhere), like the seed paper's Fig. 5-6."""
+(|pos - refPos|), fixed blocks grey, failed joints red (slipping somewhere, ductile joints with their
+cohesion too, or broken and open), like the seed paper's Fig. 5-6."""
 import math
 
 from . import omega
@@ -33,7 +33,7 @@ def failed_joints(O=None):
     segs = []
     for I in omega.joints(O):
         ph = I.phys
-        if ph.nIntact == 0 and (ph.nOpen > 0 or ph.nSlipping > 0):
+        if ph.nSlipping > 0 or (ph.nIntact == 0 and ph.nOpen > 0):  # at its strength (ductile too), or broken open
             segs.append([(I.geom.p0[0], I.geom.p0[1]), (I.geom.p1[0], I.geom.p1[1])])
     return segs
 
