@@ -42,7 +42,9 @@ columns that toppled while settling are a collapsed pile, not the slope to reduc
 every joint and material ``calibration.joint_strength(c/F, tanφ/F)`` of the soil's c, tanφ
 (*soil*), instead of dividing the joints' own. *png*: a path prefix; the blocks coloured by their
 displacement in the last stable and the first failed trial are drawn to ``<png>_stable.png`` and
-``<png>_failed.png`` (the mechanism at the bracket's ends).
+``<png>_failed.png`` (the mechanism at the bracket's ends). A failed trial also says how its moving
+blocks moved (``Trial.mechanism``, ``SRResult.mechanism`` for the bracket's failed end): sliding,
+toppling (blocks turning about their corners), or both.
 
 PyRunners in O.engines (monitor, VTK output) are switched off (``dead``) during the trials.
 """
@@ -69,13 +71,17 @@ class Trial:
     moving: float = 0.0  # mass fraction of the monitored blocks displaced more than d_fail
     local: List[int] = field(default_factory=list)  # ids of blocks that ran away alone (local failure)
     png: str = ""
+    mechanism: str = ""  # a failed trial's: "sliding", "sliding and rotating" or "toppling" (see _mechanism)
+    rocking: float = 0.0  # its moving blocks' mass-weighted rotation x circumradius / displacement
 
     def __str__(self):
         loc = (", local failure of %d block(s) %s" % (len(self.local), self.local[:5])) if self.local else ""
         ratio = ("unbalanced ratio %.2e" % self.ratio) if math.isfinite(self.ratio) else "unbalanced ratio not reached"
-        return ("F = %.4f: %s (%s after %d steps, %s, max displacement %.3e m, moving mass %.1f %%%s, "
+        mech = (", mechanism: %s (rotation x size / displacement %.2f)" % (self.mechanism, self.rocking)
+                if self.mechanism else "")
+        return ("F = %.4f: %s (%s after %d steps, %s, max displacement %.3e m, moving mass %.1f %%%s%s, "
                 "%.1f s wall)" % (self.F, "FAILED" if self.failed else "stable", self.reason, self.steps, ratio,
-                                  self.dmax, 100 * self.moving, loc, self.wall))
+                                  self.dmax, 100 * self.moving, loc, mech, self.wall))
 
 
 @dataclass
@@ -87,9 +93,15 @@ class SRResult:
     criterion: str = ""
     reference_ratio: float = 0.0  # unbalanced-force ratio of the reference state at its own strengths
 
+    @property
+    def mechanism(self):
+        """The mechanism of the failed end of the bracket (Trial.mechanism of the trial at *hi*)."""
+        return next((t.mechanism for t in self.trials if t.F == self.hi and t.failed), "")
+
     def __str__(self):
-        return ("strength reduction: FS = %.3f, bracket [%.4f stable, %.4f failed] after %d trials"
-                % (self.fs, self.lo, self.hi, len(self.trials)))
+        mech = self.mechanism
+        return ("strength reduction: FS = %.3f, bracket [%.4f stable, %.4f failed] after %d trials%s"
+                % (self.fs, self.lo, self.hi, len(self.trials), (", failing by %s" % mech) if mech else ""))
 
 
 class _Reference:
@@ -150,6 +162,29 @@ def _free_ids():
     return [b.id for b in omega.free_bodies(O)]
 
 
+def _mechanism(ids, start_ori, d):
+    """How the blocks that moved most in a trial (displaced more than half the largest displacement)
+    moved: each block's rotation θ times its circumradius R over its displacement d, mass-weighted.
+    A sliding block turns little (θR/d near 0, also in a rotational slide of a mass much larger than
+    its blocks); a block toppling about a corner has d = θ × (corner to centroid), θR/d near 1.
+    Returns (name, index): "sliding" below 0.3, "toppling" above 0.7, "sliding and rotating" between."""
+    from yade import O
+    dmax = max(d.values()) if d else 0.0
+    if dmax <= 0:
+        return "", 0.0
+    num = den = 0.0
+    for i in ids:
+        if d[i] < 0.5 * dmax:
+            continue
+        s = O.bodies[i].state
+        angle = abs((start_ori[i].conjugate() * s.ori).toAxisAngle()[1])
+        angle = min(angle, 2 * math.pi - angle)
+        num += s.mass * angle * O.bodies[i].shape.circumradius / d[i]
+        den += s.mass
+    rocking = num / den if den > 0 else 0.0
+    return ("sliding" if rocking < 0.3 else "toppling" if rocking > 0.7 else "sliding and rotating"), rocking
+
+
 def _trial_args(where, F, tol, d_fail, max_steps, check, damping):
     return (number(where, "F", F, 0, low_open=True), number(where, "tol", tol, 0, low_open=True),
             number(where, "d_fail", d_fail, 0, low_open=True), count(where, "max_steps", max_steps),
@@ -159,8 +194,8 @@ def _trial_args(where, F, tol, d_fail, max_steps, check, damping):
 def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=100, damping=0.7,
           reduce_tensile=False, verbose=False, mass_fraction=0.01, png=None):
     """One trial at factor *F* from the state saved under *mark* (see the module docstring).
-    Returns a :class:`Trial`."""
-    from yade import O, Vector3
+    Returns a :class:`Trial`; a failed one says how its moving blocks moved (Trial.mechanism)."""
+    from yade import O, Quaternion, Vector3
     from .scene import advance
     from .slope import unbalanced_ratio
     F, tol, d_fail, max_steps, check, damping = _trial_args("trial", F, tol, d_fail, max_steps, check, damping)
@@ -172,6 +207,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     reduce_strengths(F, ref, reduce_tensile)
     ids = ids if ids is not None else _free_ids()
     start = {i: Vector3(O.bodies[i].state.pos) for i in ids}
+    start_ori = {i: Quaternion(O.bodies[i].state.ori) for i in ids}
     for i in ids:
         O.bodies[i].state.refPos = start[i]  # the snapshot colours the trial's displacement
     mass = {i: O.bodies[i].state.mass for i in ids}
@@ -198,10 +234,12 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
             failed, reason = False, "converged"
             break
     t = Trial(F, failed, reason, steps, ratio, dmax, time.time() - w0, moving, sorted(local))
+    if failed:
+        t.mechanism, t.rocking = _mechanism(ids, start_ori, d)
     if png:
         from .snapshots import snapshot
-        t.png = snapshot(png, title="strength reduction F = %.4f: %s (%s)" % (F, "failed" if failed else "stable",
-                                                                              reason))
+        t.png = snapshot(png, title="strength reduction F = %.4f: %s (%s%s)" % (
+            F, "failed" if failed else "stable", reason, (", " + t.mechanism) if t.mechanism else ""))
     if verbose:
         print("  strength reduction trial " + str(t), flush=True)
     return t

@@ -26,6 +26,7 @@ def test_block_on_plane(psi):
     assert ntrials <= 30
     assert moved < 1e-9  # reference state restored
     assert tanphi == pytest.approx(math.tan(math.radians(30)), rel=1e-8)
+    assert f[9] == "sliding", f  # the failed end's mechanism
 
 
 def test_a_reference_state_that_toppled_while_settling_is_refused():
@@ -40,3 +41,16 @@ def test_a_reference_state_that_toppled_while_settling_is_refused():
     msg = refused[0]
     assert "strength_reduction: the reference state" in msg and "rotated" in msg and "#" in msg, msg
     assert "reference_rotation" in msg, msg  # says how to accept it
+
+
+def test_the_failed_end_says_toppling_for_a_column_that_tips():
+    """A bonded column that only its joint's tension holds upright: strength reduction (tension reduced
+    too) fails it by toppling, and says so (Trial.mechanism, SRResult.mechanism; the block on a plane
+    above says sliding)."""
+    p = run_yade(os.path.join(HERE, "sr_column.py"), cwd=HERE, timeout=120)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    f = [l for l in p.stdout.splitlines() if l.startswith("RESULT")][0].split()
+    fs, lo, hi = map(float, f[1:4])
+    assert lo < fs < hi
+    assert f[4] == "toppling" and float(f[5]) > 0.7, f
+    assert "failing by toppling" in p.stdout
