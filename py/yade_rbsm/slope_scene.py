@@ -75,16 +75,18 @@ def joints_on(polylines, tol=None):
         tol = 1e-6 * size
     out = []
     for I in omega.joints(O):
-        s1 = O.bodies[I.id1].state
-        back = s1.refOri * s1.ori.conjugate()  # current -> reference pose of block 1
+        # the segment lies on the reference edge: back to where that edge's block was built (through
+        # the other block it would be off by the joint's overlap)
+        s = O.bodies[I.id2 if I.geom.refBody == 2 else I.id1].state
+        back = s.refOri * s.ori.conjugate()
 
         def ref(x):
-            v = s1.refPos + back * (Vector3(x[0], x[1], 0) - s1.pos)
+            v = s.refPos + back * (Vector3(x[0], x[1], 0) - s.pos)
             return v[0], v[1]
         p0, p1 = ref(I.geom.p0), ref(I.geom.p1)
         if math.hypot(p1[0] - p0[0], p1[1] - p0[1]) <= tol:
             continue
-        c1, c2 = s1.refPos, O.bodies[I.id2].state.refPos
+        c1, c2 = O.bodies[I.id1].state.refPos, O.bodies[I.id2].state.refPos
 
         def opposite(a, b):
             dx, dy = b[0] - a[0], b[1] - a[1]

@@ -4,6 +4,7 @@
 #   FS = (c A + W cos(psi) tan(phi)) / (W sin(psi))   (dry, vertical crack to the crest).
 #   yade-rbsm -n -x joint_set_wedge.py [voronoi|bricks] c_kPa phi_deg psi_deg [ductile|brittle] [before|after]
 #   yade-rbsm -n -x joint_set_wedge.py bricks 50 30 35 ductile errors   (bad input: prints ERROR <message>)
+#   yade-rbsm -n -x joint_set_wedge.py voronoi 50 30 35 ductile network  (a joint network: found again once settled?)
 import json
 import math
 import sys
@@ -26,7 +27,16 @@ plane, crack = [(xd, yd), (xk, yk)], [(xk, yk), (xk, y0 + H)]
 rock = wrapper.RbsmMat(young=1e9, poisson=0.25, density=rho, frictionAngle=math.radians(40), cohesion=5e6,
                        tensileStrength=2e6, label="rock")
 O.materials.append(rock)
-if pattern == "voronoi":
+if when == "network":  # bedding dipping 30 deg every 3 m and cross joints every 4 m, cut through Voronoi blocks
+    plane = [[(0.0, yb + math.tan(math.radians(30)) * 0.0), (40.0, yb + math.tan(math.radians(30)) * 40.0)]
+             for yb in range(-24, 24, 3)] + [[(x, 0.0), (x, y0 + H)] for x in range(4, 40, 4)]
+    def ground(x):
+        return y0 if x <= xt else y0 + H if x >= xcr else y0 + (x - xt) * math.tan(beta)
+    plane = [l for l in plane if any(0.5 < l[0][1] + (l[1][1] - l[0][1]) * k / 40.0 < ground(l[0][0] + (l[1][0] - l[0][0])
+                                                                                           * k / 40.0) - 0.5
+                                     for k in range(41))]
+    sb = sl.voronoi_slope_blocks(surface, 0.0, spacing=2.0, seed=5, min_distance=1.0, joints=plane)
+elif pattern == "voronoi":
     sb = sl.voronoi_slope_blocks(surface, 0.0, spacing=2.0, seed=3, min_distance=1.0, joints=[plane], cracks=[crack])
 else:
     sb = sl.brick_blocks(surface, 0.0, 1.5, 1.5, joints=[plane], cracks=[crack])
@@ -49,7 +59,28 @@ if when == "errors":
             print("ERROR", e)
     sys.exit(0)
 n_set = sl.set_joint_strength([plane], **strength) if when == "before" else 0
+cuts = plane if when == "network" else [plane]
+on_cut = {(I.id1, I.id2) for I in sl.joints_on(cuts)}
 sl.settle(tol=1e-4, max_steps=60000, check=200, density_scaling=True)
+# the joints of the cut are found again on the settled slope (those that still exist)
+found = {(I.id1, I.id2) for I in sl.joints_on(cuts)}
+missed = sum(1 for k in on_cut if O.interactions.has(*k) and O.interactions[k].isReal and k not in found)
+if when == "network":
+    # what lies on a cut seen from either block's reference pose (10 um), joints longer than 0.1 mm
+    from yade import Vector3
+    from yade_rbsm.geometry import point_segment_distance
+    segs = [(a, b) for l in cuts for a, b in zip(l[:-1], l[1:])]
+
+    def on_a_cut(I, s):
+        back = s.refOri * s.ori.conjugate()
+        p = [s.refPos + back * (Vector3(x[0], x[1], 0) - s.pos) for x in (I.geom.p0, I.geom.p1)]
+        return any(point_segment_distance((p[0][0], p[0][1]), a, b) < 1e-5 and
+                   point_segment_distance((p[1][0], p[1][1]), a, b) < 1e-5 for a, b in segs)
+    seen = {(I.id1, I.id2) for I in O.interactions if I.isReal and I.geom.length > 1e-4
+            and any(on_a_cut(I, O.bodies[i].state) for i in (I.id1, I.id2))}
+    print("RESULT " + json.dumps(dict(on_cut=len(on_cut), found=len(found), missed=missed, seen=len(seen),
+                                      unseen=len(seen - found))))
+    sys.exit(0)
 if when == "after":
     n_set = sl.set_joint_strength([plane], **strength)
 on_plane = sum(1 for I in O.interactions if I.isReal and I.phys.cohesion == c and I.phys.tanPhi == math.tan(phi))
@@ -60,5 +91,6 @@ W = rho * g * A
 fs0 = (c * math.hypot(xk - xd, yk - yd) + W * math.cos(psi) * math.tan(phi)) / (W * math.sin(psi))
 r = strength_reduction(start=1.0, grow=1.2, rtol=0.005, density_scaling=True, max_steps=8000, check=200, d_fail=0.1,
                        verbose=False)
-print("RESULT " + json.dumps(dict(fs=r.fs, lo=r.lo, hi=r.hi, closed=fs0, n_set=n_set, on_plane=on_plane,
+print("RESULT " + json.dumps(dict(fs=r.fs, lo=r.lo, hi=r.hi, closed=fs0, n_set=n_set, on_plane=on_plane, on_cut=len(on_cut),
+                                  missed=missed,
                                   rock_strength=rock_strength, joints=nj, blocks=len(sb.free))))
