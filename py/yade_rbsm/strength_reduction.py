@@ -44,7 +44,10 @@ every joint and material ``calibration.joint_strength(c/F, tanφ/F)`` of the soi
 displacement in the last stable and the first failed trial are drawn to ``<png>_stable.png`` and
 ``<png>_failed.png`` (the mechanism at the bracket's ends). A failed trial also says how its moving
 blocks moved (``Trial.mechanism``, ``SRResult.mechanism`` for the bracket's failed end): sliding,
-toppling (blocks turning about their corners), or both.
+toppling (blocks turning about their corners), or both. ``SRResult.warnings`` (printed when verbose)
+says where the bracket may be the criterion's rather than the slope's: a failed end that only did not
+converge within ``max_steps`` while nothing ran away (soft, slowly settling columns), or a stable end that
+moved more than half of ``d_fail``.
 
 PyRunners in O.engines (monitor, VTK output) are switched off (``dead``) during the trials.
 """
@@ -92,6 +95,7 @@ class SRResult:
     trials: List[Trial] = field(default_factory=list)
     criterion: str = ""
     reference_ratio: float = 0.0  # unbalanced-force ratio of the reference state at its own strengths
+    warnings: List[str] = field(default_factory=list)  # where the bracket may be the criterion's (_warnings)
 
     @property
     def mechanism(self):
@@ -353,7 +357,30 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
         stepper = time_stepper()  # (the loaded scene's)
         if stepper is not None:
             stepper.densityScaling = old_scaling
-    return SRResult(0.5 * (lo + hi), lo, hi, trials, crit, r0)
+    result = SRResult(0.5 * (lo + hi), lo, hi, trials, crit, r0, _warnings(trials, lo, hi, d_fail, max_steps))
+    if verbose:
+        for w in result.warnings:
+            print("  strength reduction: WARNING: " + w, flush=True)
+    return result
+
+
+def _warnings(trials, lo, hi, d_fail, max_steps):
+    """Where the bracket's ends are set by the failure criterion's parameters rather than by a
+    mechanism: a failed end that did not converge within *max_steps* while nothing ran away, and a
+    stable end that moved more than half of *d_fail*."""
+    out = []
+    t_hi = next((t for t in trials if t.F == hi and t.failed), None)
+    t_lo = next((t for t in trials if t.F == lo and not t.failed), None)
+    if t_hi is not None and t_hi.reason == "not converged" and t_hi.dmax < d_fail:
+        out.append("the failed end F = %.4f only did not converge within max_steps = %d (unbalanced ratio %.2e, "
+                   "largest displacement %.3g m < d_fail = %g m): nothing ran away, and a slope still settling "
+                   "slowly fails the same way; a longer max_steps may raise the FS"
+                   % (t_hi.F, max_steps, t_hi.ratio, t_hi.dmax, d_fail))
+    if t_lo is not None and t_lo.dmax > 0.5 * d_fail:
+        out.append("the stable end F = %.4f moved %.3g m, more than half of d_fail = %g m: the runaway criterion is "
+                   "close to the slope's own deformation before failure; a larger d_fail may raise the FS"
+                   % (t_lo.F, t_lo.dmax, d_fail))
+    return out
 
 
 def _check_rotation(ids, limit, mass_fraction, verbose):

@@ -18,6 +18,6 @@ pos0 = Vector3(O.bodies[1].state.pos)
 res = strength_reduction(start=1.0, grow=1.5, rtol=0.005, tol=1e-4, d_fail=2e-3, max_steps=1500, check=100,
                          damping=0.7, verbose=True)
 print(res)
-print("RESULT %r %.9g %.9g %.9g %.9g %d %.3e %.9g %s" % (ok, res.fs, res.lo, res.hi, math.tan(phi) / math.tan(psi),
+print("RESULT %r %.9g %.9g %.9g %.9g %d %.3e %.9g %s %d" % (ok, res.fs, res.lo, res.hi, math.tan(phi) / math.tan(psi),
       len(res.trials), (O.bodies[1].state.pos - pos0).norm(), O.interactions[0, 1].phys.tanPhi,
-      res.mechanism.replace(" ", "_")))
+      res.mechanism.replace(" ", "_"), len(res.warnings)))
