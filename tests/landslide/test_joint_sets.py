@@ -59,3 +59,17 @@ def test_a_settled_joint_network_is_found_in_the_reference_pose():
     r = result("voronoi", "50", "30", "35", "ductile", "network")
     assert r["seen"] > 300 and r["found"] >= r["seen"], r
     assert r["unseen"] == 0 and r["missed"] == 0, r
+
+
+def test_a_step_path_over_two_joint_sets_gives_the_rigid_block_limit_equilibrium():
+    """The new user's step path (step_path.py: bedding dipping 30 deg offset at cross joints every 4 m, in
+    a 65 deg face; c 20 kPa, phi 35 deg on the joint sets, rock between): strength reduction within 1 % of
+    the least rigid-block limit equilibrium over the step paths (1.6114); before the two fixes it found
+    (a corner bond growing with its contact, joints found through the wrong block) this tessellation gave
+    1.878-1.89."""
+    p = run_yade(os.path.join(HERE, "step_path.py"), "5", cwd=HERE, timeout=240)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    r = json.loads([l for l in p.stdout.splitlines() if l.startswith("RESULT ")][0][7:])
+    assert r["paths"] == 9 and r["le"] == pytest.approx(1.6114, abs=1e-4), r
+    assert r["fs"] == pytest.approx(r["le"], rel=0.01), r
+    assert r["mechanism"] == "sliding", r
