@@ -33,7 +33,7 @@ def test_block_on_plane(psi):
 def test_a_reference_state_that_toppled_while_settling_is_refused():
     """A new user's columns toppled 4 m while settling and strength reduction reported an FS of the
     collapsed pile without a word: the blocks' rotation since they were built is now checked."""
-    p = run_yade(os.path.join(HERE, "sr_toppled.py"), cwd=HERE, timeout=240)
+    p = run_yade(os.path.join(HERE, "stepped_columns.py"), "35", "8000", cwd=HERE, timeout=240)
     assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
     settled = [l for l in p.stdout.splitlines() if l.startswith("SETTLED")][0].split()
     assert float(settled[-1]) > 0.5, settled  # toppled: rotated by more than 0.5 rad (the scene still does)
@@ -61,7 +61,7 @@ def test_a_bracket_set_by_max_steps_is_warned_about():
     """A new user's soft toppling columns (E 1 GPa): with max_steps 8000 the failed end only did not
     converge (ratio 1.9e-4, 4.5 cm of motion, nothing ran away) and the FS was 1.234 against 1.346 with
     40 000 steps; the result now says so (SRResult.warnings)."""
-    p = run_yade(os.path.join(HERE, "sr_columns_soft.py"), "8000", cwd=HERE, timeout=240)
+    p = run_yade(os.path.join(HERE, "stepped_columns.py"), "50", "8000", cwd=HERE, timeout=240)
     assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
     warnings = [l for l in p.stdout.splitlines() if l.startswith("WARNING")]
     assert len(warnings) == 1 and "did not converge within max_steps = 8000" in warnings[0], p.stdout[-2000:]
