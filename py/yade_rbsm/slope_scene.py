@@ -63,8 +63,12 @@ def joints_on(polylines, tol=None):
     polyline are not on it) with their two blocks on opposite sides of it: the joints a cut along
     the polylines made (builders' ``joints=`` and ``cracks=``). Tested in the blocks' reference
     configuration (State.refPos, refOri: where build_scene put them), so that a settled slope's joints
-    are found on the polylines it was cut along."""
-    from yade import O, Vector3
+    are found on the polylines it was cut along. The segment (RbsmGeom.p0, p1) lies on the edge of
+    the block that holds the reference edge (RbsmGeom.refBody), and was computed before the last
+    step moved the blocks: it is taken back with that block's pose of then (pos - vel dt, ori
+    turned back by angVel dt), so that neither the joint's overlap (mm in a settled soft slope) nor
+    the last step's motion (a soft slope's first step, in bond_and_break) moves it off the polyline."""
+    from yade import O, Quaternion, Vector3
     from . import omega
     from .geometry import point_segment_distance
     segs = [(a, b) for l in polylines for a, b in zip(l[:-1], l[1:])]
@@ -73,18 +77,24 @@ def joints_on(polylines, tol=None):
     if tol is None:
         size = max(max(abs(c) for s in segs for p in s for c in p), 1.0)
         tol = 1e-6 * size
+    dt = O.dt
     out = []
     for I in omega.joints(O):
-        s1 = O.bodies[I.id1].state
-        back = s1.refOri * s1.ori.conjugate()  # current -> reference pose of block 1
+        ids = (I.id2, I.id1) if getattr(I.geom, "refBody", 1) == 2 else (I.id1, I.id2)
+        if type(O.bodies[ids[0]].shape).__name__ != "Polygon2D":  # a wall's or facet's edge: the block's pose
+            ids = ids[::-1]
+        s = O.bodies[ids[0]].state
+        pos = s.pos - s.vel * dt  # the pose the geometry was computed in (NewtonIntegrator: pos += vel dt)
+        ori = Quaternion(Vector3(0, 0, 1), -s.angVel[2] * dt) * s.ori
+        back = s.refOri * ori.conjugate()  # that pose -> the reference pose
 
         def ref(x):
-            v = s1.refPos + back * (Vector3(x[0], x[1], 0) - s1.pos)
+            v = s.refPos + back * (Vector3(x[0], x[1], 0) - pos)
             return v[0], v[1]
         p0, p1 = ref(I.geom.p0), ref(I.geom.p1)
         if math.hypot(p1[0] - p0[0], p1[1] - p0[1]) <= tol:
             continue
-        c1, c2 = s1.refPos, O.bodies[I.id2].state.refPos
+        c1, c2 = O.bodies[I.id1].state.refPos, O.bodies[I.id2].state.refPos
 
         def opposite(a, b):
             dx, dy = b[0] - a[0], b[1] - a[1]
