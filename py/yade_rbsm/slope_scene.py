@@ -63,7 +63,8 @@ def joints_on(polylines, tol=None):
     polyline are not on it) with their two blocks on opposite sides of it: the joints a cut along
     the polylines made (builders' ``joints=`` and ``cracks=``). Tested in the blocks' reference
     configuration (State.refPos, refOri: where build_scene put them), so that a settled slope's joints
-    are found on the polylines it was cut along. The segment (RbsmGeom.p0, p1) lies on the edge of
+    are found on the polylines it was cut along (a script that resets refPos, or refOri, alone after
+    settling moves that pose off the cut). The segment (RbsmGeom.p0, p1) lies on the edge of
     the block that holds the reference edge (RbsmGeom.refBody), and was computed before the last
     step moved the blocks: it is taken back with that block's pose of then (pos - vel dt, ori
     turned back by angVel dt), so that neither the joint's overlap (mm in a settled soft slope) nor
@@ -145,7 +146,8 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
     for k, js in enumerate(found):
         if not js:
             raise ValueError("%s: no joint lies on polylines[%d] %s (give the polyline the blocks were cut along, "
-                             "after build_scene and bond_and_break)" % (who, k, polylines[k]))
+                             "after build_scene and bond_and_break; the joints are looked for where build_scene put "
+                             "the blocks, State.refPos and refOri: were these reset since?)" % (who, k, polylines[k]))
     tan_phi = math.tan(friction_angle)
     done = set()
     for js in found:

@@ -10,7 +10,7 @@ import json
 import math
 import sys
 
-from yade import O, wrapper
+from yade import O, Vector3, wrapper
 
 import yade_rbsm as yr
 from yade_rbsm import slope as sl
@@ -52,6 +52,13 @@ if when == "errors":
             print("NO ERROR", kw)
         except ValueError as e:
             print("ERROR", e)
+    for b in O.bodies:  # refPos reset (here: moved 1 cm) since build_scene: the cut is not found there
+        b.state.refPos = b.state.refPos + Vector3(0, 0.01, 0)
+    try:
+        sl.set_joint_strength([plane], **strength)
+        print("NO ERROR refPos moved")
+    except ValueError as e:
+        print("ERROR", e)
     sys.exit(0)
 n_set = sl.set_joint_strength([plane], **strength) if when == "before" else 0
 sl.settle(tol=1e-4, max_steps=60000, check=200, density_scaling=True)
