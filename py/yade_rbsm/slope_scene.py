@@ -63,8 +63,13 @@ def joints_on(polylines, tol=None):
     polyline are not on it) with their two blocks on opposite sides of it: the joints a cut along
     the polylines made (builders' ``joints=`` and ``cracks=``). Tested in the blocks' reference
     configuration (State.refPos, refOri: where build_scene put them), so that a settled slope's joints
-    are found on the polylines it was cut along."""
-    from yade import O, Vector3
+    are found on the polylines it was cut along (a script that resets refPos, or refOri, alone after
+    settling moves that pose off the cut). The segment (RbsmGeom.p0, p1) lies on the edge of
+    the block that holds the reference edge (RbsmGeom.refBody), and was computed before the last
+    step moved the blocks: it is taken back with that block's pose of then (pos - vel dt, ori
+    turned back by angVel dt), so that neither the joint's overlap (mm in a settled soft slope) nor
+    the last step's motion (a soft slope's first step, in bond_and_break) moves it off the polyline."""
+    from yade import O, Quaternion, Vector3
     from . import omega
     from .geometry import point_segment_distance
     segs = [(a, b) for l in polylines for a, b in zip(l[:-1], l[1:])]
@@ -73,15 +78,19 @@ def joints_on(polylines, tol=None):
     if tol is None:
         size = max(max(abs(c) for s in segs for p in s for c in p), 1.0)
         tol = 1e-6 * size
+    dt = O.dt
     out = []
     for I in omega.joints(O):
-        # the segment lies on the reference edge: back to where that edge's block was built (through
-        # the other block it would be off by the joint's overlap)
-        s = O.bodies[I.id2 if I.geom.refBody == 2 else I.id1].state
-        back = s.refOri * s.ori.conjugate()
+        ids = (I.id2, I.id1) if getattr(I.geom, "refBody", 1) == 2 else (I.id1, I.id2)
+        if type(O.bodies[ids[0]].shape).__name__ != "Polygon2D":  # a wall's or facet's edge: the block's pose
+            ids = ids[::-1]
+        s = O.bodies[ids[0]].state
+        pos = s.pos - s.vel * dt  # the pose the geometry was computed in (NewtonIntegrator: pos += vel dt)
+        ori = Quaternion(Vector3(0, 0, 1), -s.angVel[2] * dt) * s.ori
+        back = s.refOri * ori.conjugate()  # that pose -> the reference pose
 
         def ref(x):
-            v = s.refPos + back * (Vector3(x[0], x[1], 0) - s.pos)
+            v = s.refPos + back * (Vector3(x[0], x[1], 0) - pos)
             return v[0], v[1]
         p0, p1 = ref(I.geom.p0), ref(I.geom.p1)
         if math.hypot(p1[0] - p0[0], p1[1] - p0[1]) <= tol:
@@ -137,7 +146,8 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
     for k, js in enumerate(found):
         if not js:
             raise ValueError("%s: no joint lies on polylines[%d] %s (give the polyline the blocks were cut along, "
-                             "after build_scene and bond_and_break)" % (who, k, polylines[k]))
+                             "after build_scene and bond_and_break; the joints are looked for where build_scene put "
+                             "the blocks, State.refPos and refOri: were these reset since?)" % (who, k, polylines[k]))
     tan_phi = math.tan(friction_angle)
     done = set()
     for js in found:

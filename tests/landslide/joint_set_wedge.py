@@ -5,17 +5,21 @@
 #   yade-rbsm -n -x joint_set_wedge.py [voronoi|bricks] c_kPa phi_deg psi_deg [ductile|brittle] [before|after]
 #   yade-rbsm -n -x joint_set_wedge.py bricks 50 30 35 ductile errors   (bad input: prints ERROR <message>)
 #   yade-rbsm -n -x joint_set_wedge.py voronoi 50 30 35 ductile network  (a joint network: found again once settled?)
+# Optional 7th and 8th arguments: the rock's Young's modulus [Pa] (default 1e9) and "nofs" (no strength
+# reduction). RESULT's "missed": joints of the plane bonded at the start that set_joint_strength did not set.
 import json
 import math
 import sys
 
-from yade import O, wrapper
+from yade import O, Vector3, wrapper
 
 import yade_rbsm as yr
 from yade_rbsm import slope as sl
 from yade_rbsm.strength_reduction import strength_reduction
 
 pattern, c_kpa, phi_deg, psi_deg, law, when = sys.argv[1:7]
+young = float(sys.argv[7]) if len(sys.argv) > 7 else 1e9
+with_fs = not (len(sys.argv) > 8 and sys.argv[8] == "nofs")
 c, phi, psi = float(c_kpa) * 1e3, math.radians(float(phi_deg)), math.radians(float(psi_deg))
 rho, g, H, beta = 2600.0, 9.81, 20.0, math.radians(65)
 y0, xt, xk = 4.0, 8.0, 26.0  # toe level, toe, tension crack
@@ -24,12 +28,13 @@ xd, yd = xt + 4.0 / math.tan(beta), y0 + 4.0  # the joint daylights 4 m above th
 yk = yd + (xk - xd) * math.tan(psi)
 surface = [(0, y0), (xt, y0), (xcr, y0 + H), (40.0, y0 + H)]
 plane, crack = [(xd, yd), (xk, yk)], [(xk, yk), (xk, y0 + H)]
-rock = wrapper.RbsmMat(young=1e9, poisson=0.25, density=rho, frictionAngle=math.radians(40), cohesion=5e6,
+rock = wrapper.RbsmMat(young=young, poisson=0.25, density=rho, frictionAngle=math.radians(40), cohesion=5e6,
                        tensileStrength=2e6, label="rock")
 O.materials.append(rock)
 if when == "network":  # bedding dipping 30 deg every 3 m and cross joints every 4 m, cut through Voronoi blocks
     plane = [[(0.0, yb + math.tan(math.radians(30)) * 0.0), (40.0, yb + math.tan(math.radians(30)) * 40.0)]
              for yb in range(-24, 24, 3)] + [[(x, 0.0), (x, y0 + H)] for x in range(4, 40, 4)]
+
     def ground(x):
         return y0 if x <= xt else y0 + H if x >= xcr else y0 + (x - xt) * math.tan(beta)
     plane = [l for l in plane if any(0.5 < l[0][1] + (l[1][1] - l[0][1]) * k / 40.0 < ground(l[0][0] + (l[1][0] - l[0][0])
@@ -44,6 +49,8 @@ sl.build_scene(sb, rock)
 O.engines = yr.engines(set_dt=True, enlarge=0.01)
 O.dt = 1e-6
 nj, nb = sl.bond_and_break(sb)
+cuts = plane if when == "network" else [plane]
+bonded_on_plane = {(I.id1, I.id2) for I in sl.joints_on(cuts)}  # found in the pose they were bonded in
 strength = dict(cohesion=c, friction_angle=phi, ductile=(law == "ductile"))
 if when == "errors":
     for args, kw in [(([[(30.0, 30.0), (35.0, 31.0)]],), strength),  # above the slope: no joint on it
@@ -57,19 +64,23 @@ if when == "errors":
             print("NO ERROR", kw)
         except ValueError as e:
             print("ERROR", e)
+    for b in O.bodies:  # refPos reset (here: moved 1 cm) since build_scene: the cut is not found there
+        b.state.refPos = b.state.refPos + Vector3(0, 0.01, 0)
+    try:
+        sl.set_joint_strength([plane], **strength)
+        print("NO ERROR refPos moved")
+    except ValueError as e:
+        print("ERROR", e)
     sys.exit(0)
 n_set = sl.set_joint_strength([plane], **strength) if when == "before" else 0
-cuts = plane if when == "network" else [plane]
-on_cut = {(I.id1, I.id2) for I in sl.joints_on(cuts)}
 sl.settle(tol=1e-4, max_steps=60000, check=200, density_scaling=True)
-# the joints of the cut are found again on the settled slope (those that still exist)
-found = {(I.id1, I.id2) for I in sl.joints_on(cuts)}
-missed = sum(1 for k in on_cut if O.interactions.has(*k) and O.interactions[k].isReal and k not in found)
 if when == "network":
-    # what lies on a cut seen from either block's reference pose (10 um), joints longer than 0.1 mm
-    from yade import Vector3
+    # the joints of the cuts found again on the settled slope, and what lies on a cut seen from either block's
+    # reference pose (10 um), joints longer than 0.1 mm
     from yade_rbsm.geometry import point_segment_distance
-    segs = [(a, b) for l in cuts for a, b in zip(l[:-1], l[1:])]
+    found = {(I.id1, I.id2) for I in sl.joints_on(plane)}
+    lost = sum(1 for k in bonded_on_plane if O.interactions.has(*k) and O.interactions[k].isReal and k not in found)
+    segs = [(a, b) for l in plane for a, b in zip(l[:-1], l[1:])]
 
     def on_a_cut(I, s):
         back = s.refOri * s.ori.conjugate()
@@ -78,19 +89,24 @@ if when == "network":
                    point_segment_distance((p[1][0], p[1][1]), a, b) < 1e-5 for a, b in segs)
     seen = {(I.id1, I.id2) for I in O.interactions if I.isReal and I.geom.length > 1e-4
             and any(on_a_cut(I, O.bodies[i].state) for i in (I.id1, I.id2))}
-    print("RESULT " + json.dumps(dict(on_cut=len(on_cut), found=len(found), missed=missed, seen=len(seen),
+    print("RESULT " + json.dumps(dict(on_cut=len(bonded_on_plane), found=len(found), missed=lost, seen=len(seen),
                                       unseen=len(seen - found))))
     sys.exit(0)
 if when == "after":
     n_set = sl.set_joint_strength([plane], **strength)
+missed = sum(1 for k in bonded_on_plane if O.interactions.has(*k) and O.interactions[k].isReal
+             and O.interactions[k].phys.cohesion != c)
 on_plane = sum(1 for I in O.interactions if I.isReal and I.phys.cohesion == c and I.phys.tanPhi == math.tan(phi))
 rock_strength = sum(1 for I in O.interactions if I.isReal and I.phys.cohesion == rock.cohesion)
 wedge = [(xd, yd), (xk, yk), (xk, y0 + H), (xcr, y0 + H)]
 A = abs(0.5 * sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(wedge, wedge[1:] + wedge[:1])))
 W = rho * g * A
 fs0 = (c * math.hypot(xk - xd, yk - yd) + W * math.cos(psi) * math.tan(phi)) / (W * math.sin(psi))
+if not with_fs:
+    print("RESULT " + json.dumps(dict(n_set=n_set, missed=missed, bonded_on_plane=len(bonded_on_plane), cracked=nb)))
+    sys.exit(0)
 r = strength_reduction(start=1.0, grow=1.2, rtol=0.005, density_scaling=True, max_steps=8000, check=200, d_fail=0.1,
                        verbose=False)
-print("RESULT " + json.dumps(dict(fs=r.fs, lo=r.lo, hi=r.hi, closed=fs0, n_set=n_set, on_plane=on_plane, on_cut=len(on_cut),
-                                  missed=missed,
-                                  rock_strength=rock_strength, joints=nj, blocks=len(sb.free))))
+print("RESULT " + json.dumps(dict(fs=r.fs, lo=r.lo, hi=r.hi, closed=fs0, n_set=n_set, on_plane=on_plane,
+                                  rock_strength=rock_strength, joints=nj, blocks=len(sb.free), missed=missed,
+                                  warnings=r.warnings)))
