@@ -126,7 +126,11 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
     RbsmPhys.ductile if *ductile* is given. The other joints keep what their blocks' materials gave.
     Call it after :func:`bond_and_break` (intact points keep their cohesion, broken ones stay broken);
     strength_reduction then reduces these strengths as any joint's. Contacts made later (a block
-    sliding onto a new neighbour) take their blocks' materials. Returns the number of joints set;
+    sliding onto a new neighbour along the set) take their blocks' materials: a set with less friction
+    than the rock gains friction as its blocks slide past each other (a wedge at tan 30 / tan 25 =
+    1.238 stopped at 1.269 with the rock's 40 deg; strength_reduction warns that its stable end moved).
+    *friction_angle* in radians: degrees (> pi/2) are refused. Returns the number of joints set (over
+    all ranks under yade.mpy, where every rank calls it);
     ValueError if a polyline carries no joint (it misses the blocks' cuts) or a value is out of range."""
     from .checks import number
     from .geometry import points
@@ -142,9 +146,14 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
                              "cohesion / tan(friction_angle) is infinite)" % who)
         tensile_strength = cohesion / math.tan(friction_angle) if cohesion > 0 else 0.0
     tensile_strength = number(who, "tensile_strength", tensile_strength, 0)
+    from yade import O
+    from . import mpi
     found = [joints_on([l], tol) for l in polylines]
-    for k, js in enumerate(found):
-        if not js:
+    counts = [float(len(js)) for js in found]
+    if mpi.is_split():  # a rank may hold none of a polyline's joints: the check is the whole scene's
+        counts = mpi.allreduce_sum(counts)
+    for k, n in enumerate(counts):
+        if n == 0:
             raise ValueError("%s: no joint lies on polylines[%d] %s (give the polyline the blocks were cut along, "
                              "after build_scene and bond_and_break; the joints are looked for where build_scene put "
                              "the blocks, State.refPos and refOri: were these reset since?)" % (who, k, polylines[k]))
@@ -160,6 +169,8 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
             I.phys.tensileStrength = tensile_strength
             if ductile is not None:
                 I.phys.ductile = bool(ductile)
+    if mpi.is_split():  # each joint once over the ranks (mpi.counted_here)
+        return int(mpi.allreduce_sum([float(sum(1 for k in done if mpi.counted_here(O.interactions[k])))])[0])
     return len(done)
 
 

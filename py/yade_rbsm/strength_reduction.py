@@ -166,15 +166,18 @@ def _free_ids():
     return [b.id for b in omega.free_bodies(O)]
 
 
-def _mechanism(ids, start_ori, d):
+def _mechanism(ids, start_ori, d, d_fail):
     """How the blocks that moved most in a trial (displaced more than half the largest displacement)
-    moved: each block's rotation θ times its circumradius R over its displacement d, mass-weighted.
-    A sliding block turns little (θR/d near 0, also in a rotational slide of a mass much larger than
-    its blocks); a block toppling about a corner has d = θ × (corner to centroid), θR/d near 1.
-    Returns (name, index): "sliding" below 0.3, "toppling" above 0.7, "sliding and rotating" between."""
+    moved, block by block: each block's rotation θ times its circumradius R over its displacement d,
+    mass-weighted. A sliding block turns little (θR/d near 0, also in a rotational slide of a mass much
+    larger than its blocks); a block toppling about its own corner has d = θ × (corner to centroid),
+    θR/d near 1. It describes the blocks' motion, not the mass's: a column of stacked blocks toppling
+    as one reads "sliding and rotating" (its upper blocks move more than they turn). Returns (name,
+    index): "sliding" below 0.3, "toppling" above 0.7, "sliding and rotating" between; ("", 0) when
+    nothing moved a tenth of *d_fail* (a trial that only did not converge has no mechanism to name)."""
     from yade import O
     dmax = max(d.values()) if d else 0.0
-    if dmax <= 0:
+    if dmax <= 0.1 * d_fail:
         return "", 0.0
     num = den = 0.0
     for i in ids:
@@ -239,7 +242,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
             break
     t = Trial(F, failed, reason, steps, ratio, dmax, time.time() - w0, moving, sorted(local))
     if failed:
-        t.mechanism, t.rocking = _mechanism(ids, start_ori, d)
+        t.mechanism, t.rocking = _mechanism(ids, start_ori, d, d_fail)
     if png:
         from .snapshots import snapshot
         t.png = snapshot(png, title="strength reduction F = %.4f: %s (%s%s)" % (
@@ -283,6 +286,13 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     if reference_rotation is not None:
         reference_rotation = number(where, "reference_rotation", reference_rotation, 0, low_open=True)
         _check_rotation(ids if ids is not None else _free_ids(), reference_rotation, mass_fraction, verbose)
+    if calibration is not None:
+        kinds = {(I.phys.tanPhi, I.phys.cohesion) for I in omega.joints(O)}
+        if len(kinds) > 1:
+            raise ValueError("strength_reduction: with a calibration every joint gets the calibrated strength of "
+                             "the assembly, but the joints here have %d different strengths (joint sets from "
+                             "set_joint_strength, layers of other materials): reduce them without calibration"
+                             % len(kinds))
     from .scene import time_stepper
     stepper = time_stepper()
     if density_scaling and stepper is None:

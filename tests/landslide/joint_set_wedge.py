@@ -64,6 +64,15 @@ if when == "errors":
             print("NO ERROR", kw)
         except ValueError as e:
             print("ERROR", e)
+    class OneStrength:  # a calibration's interface: the joints' strength for the assembly's (c, tan phi)
+        def joint_strength(self, cohesion, tan_phi):
+            return cohesion, tan_phi
+    sl.set_joint_strength([plane], **strength)
+    try:  # a calibration would give the joint set the rock's calibrated strength: refused
+        strength_reduction(calibration=OneStrength(), soil=(c, phi), verbose=False)
+        print("NO SRERROR")
+    except ValueError as e:
+        print("SRERROR", e)
     for b in O.bodies:  # refPos reset (here: moved 1 cm) since build_scene: the cut is not found there
         b.state.refPos = b.state.refPos + Vector3(0, 0.01, 0)
     try:
