@@ -2,10 +2,11 @@
 which re-exports these names, still loads without it): the blocks of a :class:`slope.SlopeBlocks`
 into O.bodies, bonding and breaking joints (crack, crack polylines), joint sets with their own
 strength, the unbalanced-force ratio and the gravity stage. Import these from ``yade_rbsm.slope``."""
+import json
 import math
 
-__all__ = ["build_scene", "break_crack", "joints_on", "break_joints", "set_joint_strength", "bond_and_break",
-           "unbalanced_ratio", "settle"]
+__all__ = ["build_scene", "break_crack", "joints_on", "break_joints", "set_joint_strength", "joint_sets",
+           "apply_joint_sets", "bond_and_break", "unbalanced_ratio", "settle"]
 
 
 def build_scene(sb, material=None, thickness=1.0):
@@ -126,9 +127,10 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
     RbsmPhys.ductile if *ductile* is given. The other joints keep what their blocks' materials gave.
     Call it after :func:`bond_and_break` (intact points keep their cohesion, broken ones stay broken);
     strength_reduction then reduces these strengths as any joint's. Contacts made later (a block
-    sliding onto a new neighbour along the set) take their blocks' materials: a set with less friction
-    than the rock gains friction as its blocks slide past each other (a wedge at tan 30 / tan 25 =
-    1.238 stopped at 1.269 with the rock's 40 deg; strength_reduction warns that its stable end moved).
+    sliding onto a new neighbour along the set) take their blocks' materials when they form: the set is
+    kept with the scene (:func:`joint_sets`, in O.tags) and :func:`apply_joint_sets` gives them the
+    set's strength; strength_reduction does so between the chunks of its trials (without it a wedge
+    on a 30 deg set in 40 deg rock, tan 30 / tan 25 = 1.238, stopped at 1.269).
     *friction_angle* in radians: degrees (> pi/2) are refused. Returns the number of joints set (over
     all ranks under yade.mpy, where every rank calls it);
     ValueError if a polyline carries no joint (it misses the blocks' cuts) or a value is out of range."""
@@ -169,9 +171,45 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
             I.phys.tensileStrength = tensile_strength
             if ductile is not None:
                 I.phys.ductile = bool(ductile)
+    # kept with the scene (saved, and in O.saveTmp), for contacts made later along the set
+    sets = joint_sets()
+    sets.append(dict(polylines=[[list(p) for p in l] for l in polylines], tol=tol, cohesion=cohesion,
+                     tan_phi=tan_phi, tensile_strength=tensile_strength, ductile=ductile))
+    O.tags[_SETS_TAG] = json.dumps(sets)
     if mpi.is_split():  # each joint once over the ranks (mpi.counted_here)
         return int(mpi.allreduce_sum([float(sum(1 for k in done if mpi.counted_here(O.interactions[k])))])[0])
     return len(done)
+
+
+_SETS_TAG = "yade_rbsm.joint_sets"
+
+
+def joint_sets():
+    """The joint sets set_joint_strength gave the current scene (kept in O.tags, so saved with it):
+    [{polylines, tol, cohesion, tan_phi, tensile_strength, ductile}], in the order they were given."""
+    from yade import O
+    return json.loads(O.tags[_SETS_TAG]) if _SETS_TAG in O.tags.keys() else []
+
+
+def apply_joint_sets(F=1.0, reduce_tensile=False):
+    """Give the contacts on the joint sets (:func:`joint_sets`) the set's friction, divided by *F*
+    (strength reduction's trial factor), and its cohesion and tensile strength (divided too, the
+    tensile strength only if *reduce_tensile*): contacts a block makes along a set as it slides take
+    their blocks' materials when they form. strength_reduction calls it between the chunks of every
+    trial; a dynamic run may call it from a PyRunner. Sets given later win where they overlap. Returns
+    the number of contacts changed."""
+    n = 0
+    for js in joint_sets():
+        tan_phi, c = js["tan_phi"] / F, js["cohesion"] / F
+        t = js["tensile_strength"] / F if reduce_tensile else js["tensile_strength"]
+        for I in joints_on(js["polylines"], js["tol"]):
+            ph = I.phys
+            if (ph.tanPhi, ph.cohesion, ph.tensileStrength) != (tan_phi, c, t):
+                ph.tanPhi, ph.cohesion, ph.tensileStrength = tan_phi, c, t
+                if js["ductile"] is not None:
+                    ph.ductile = bool(js["ductile"])
+                n += 1
+    return n
 
 
 def bond_and_break(sb):

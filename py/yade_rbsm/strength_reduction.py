@@ -9,8 +9,10 @@ Procedure (:func:`strength_reduction`)
    their strength from the materials).
 2. A *trial* at factor F (:func:`trial`) reloads that state, divides ``tanφ`` and ``c`` of every
    joint and every material by F (``tanφ_F = tanφ / F``, ``c_F = c / F``; the tensile strength
-   too if ``reduce_tensile``), sets ``refPos`` of the monitored blocks to their position and runs a
-   damped stage (NewtonIntegrator ``damping``, default 0.7) in chunks of *check* steps.
+   too if ``reduce_tensile``) and runs a
+   damped stage (NewtonIntegrator ``damping``, default 0.7) in chunks of *check* steps; after each
+   chunk the contacts made along a joint set (:func:`yade_rbsm.slope.set_joint_strength`) get the
+   set's strength divided by F (:func:`yade_rbsm.slope.apply_joint_sets`).
 3. **Failure criterion.** The trial *fails* if
 
    * the blocks whose displacement since the start of the trial exceeds ``d_fail`` (monitored
@@ -215,18 +217,20 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     ids = ids if ids is not None else _free_ids()
     start = {i: Vector3(O.bodies[i].state.pos) for i in ids}
     start_ori = {i: Quaternion(O.bodies[i].state.ori) for i in ids}
-    for i in ids:
-        O.bodies[i].state.refPos = start[i]  # the snapshot colours the trial's displacement
     mass = {i: O.bodies[i].state.mass for i in ids}
     total = sum(mass.values()) or 1.0
     steps, ratio, dmax, moving = 0, float("inf"), 0.0, 0.0
     failed, reason = True, "not converged"
     below = 0
     local = []
+    from .slope_scene import apply_joint_sets, joint_sets
+    sets = ref.calibration is None and bool(joint_sets())  # contacts made along a joint set get its strength
     while steps < max_steps:
         n = min(check, max_steps - steps)
         advance(n)
         steps += n
+        if sets:
+            apply_joint_sets(F, reduce_tensile)
         d = {i: (O.bodies[i].state.pos - start[i]).norm() for i in ids}
         dmax = max(d.values())
         away = [i for i in ids if d[i] > d_fail]
@@ -243,10 +247,15 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     t = Trial(F, failed, reason, steps, ratio, dmax, time.time() - w0, moving, sorted(local))
     if failed:
         t.mechanism, t.rocking = _mechanism(ids, start_ori, d, d_fail)
-    if png:
+    if png:  # coloured by the trial's displacement: refPos at the trial's start for the drawing only
         from .snapshots import snapshot
+        built = {i: Vector3(O.bodies[i].state.refPos) for i in ids}  # (joints_on needs the built pose)
+        for i in ids:
+            O.bodies[i].state.refPos = start[i]
         t.png = snapshot(png, title="strength reduction F = %.4f: %s (%s%s)" % (
             F, "failed" if failed else "stable", reason, (", " + t.mechanism) if t.mechanism else ""))
+        for i in ids:
+            O.bodies[i].state.refPos = built[i]
     if verbose:
         print("  strength reduction trial " + str(t), flush=True)
     return t

@@ -73,6 +73,13 @@ if when == "errors":
         print("NO SRERROR")
     except ValueError as e:
         print("SRERROR", e)
+    import os
+    import tempfile
+    saved = os.path.join(tempfile.mkdtemp(), "scene.xml.bz2")
+    O.save(saved)
+    before = len(sl.joint_sets())
+    O.load(saved)
+    print("SETS %d %d" % (before, len(sl.joint_sets())))
     for b in O.bodies:  # refPos reset (here: moved 1 cm) since build_scene: the cut is not found there
         b.state.refPos = b.state.refPos + Vector3(0, 0.01, 0)
     try:

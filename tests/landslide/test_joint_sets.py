@@ -2,8 +2,8 @@
 joint with cohesion, strong rock around it, strength reduction against Hoek & Bray's closed form
 (a new user's trial, done by hand: 1.4535 against 1.4518 with ductile joints set after settling).
 Set before settling, the joint opens at the wedge's heel under gravity (2 of 16 joints, 2.3 of
-19.9 m, lose their cohesion at the tension crack): the FS is then a little below the closed form,
-which keeps the cohesion along the whole plane."""
+19.9 m, lose their cohesion at the tension crack): the FS is then below the closed form, which keeps
+the cohesion along the whole plane."""
 import json
 import math
 import os
@@ -51,7 +51,9 @@ def test_joints_on_right_after_the_bond_step_and_settled():
 def test_joint_set_before_settling_opens_at_the_heel():
     r = result("bricks", "50", "30", "35", "ductile", "before")
     assert r["n_set"] > 3 and r["on_plane"] < r["n_set"]  # some opened under gravity and re-formed as rock contacts
-    assert r["closed"] * 0.97 < r["fs"] < r["closed"], r
+    # without cohesion on 2.3 of the plane's 19.9 m (and the set's friction on the joints re-formed there,
+    # apply_joint_sets) limit equilibrium loses about 115 kN/m of resistance: 1.378 against 1.452
+    assert r["closed"] * 0.9 < r["fs"] < r["closed"] * 0.99, r
 
 
 def test_frictional_joint_set():
@@ -60,15 +62,14 @@ def test_frictional_joint_set():
     assert r["fs"] == pytest.approx(r["closed"], rel=0.01), r
 
 
-def test_a_frictional_set_weaker_than_the_rock_is_warned_about():
-    """phi 30 deg on the plane, 40 deg in the rock: contacts the sliding wedge makes along the plane take
-    the rock's friction (set_joint_strength sets the joints there are), so the wedge slides some
-    centimetres and stops above the closed form tan 30 / tan 25 = 1.238 (1.269); the result warns that its
-    stable end moved most of d_fail. (Left at the rock's friction the plane would give 1.80.)"""
+def test_a_frictional_set_weaker_than_the_rock():
+    """phi 30 deg on the plane, 40 deg in the rock: the contacts the sliding wedge makes along the plane
+    take the rock's friction when they form; strength reduction gives them the set's (apply_joint_sets
+    between the chunks of its trials). Without that the wedge stopped at 1.269 against the closed form
+    tan 30 / tan 25 = 1.238 (and left at the rock's friction the plane would give 1.80)."""
     r = result("voronoi", "0", "30", "25", "ductile", "after")
     assert r["closed"] == pytest.approx(math.tan(math.radians(30)) / math.tan(math.radians(25)), rel=1e-9)
-    assert r["closed"] < r["fs"] < 1.05 * r["closed"], r
-    assert any("stable end" in w for w in r["warnings"]), r
+    assert r["fs"] == pytest.approx(r["closed"], rel=0.01), r
 
 
 def test_bad_joint_sets_are_refused_with_what_is_wrong():
@@ -80,6 +81,7 @@ def test_bad_joint_sets_are_refused_with_what_is_wrong():
     for e, what in zip(errors, ["no joint lies on polylines[0]", "cohesion must be in [0", "friction_angle must be in [0",
                                 "give tensile_strength", "polylines[0]", "no polylines given", "refPos and refOri"]):
         assert what in e, (what, e)
+    assert "SETS 1 1" in p.stdout, p.stdout[-2000:]  # the set is kept with the scene (O.save, O.load)
     sr = [l for l in p.stdout.splitlines() if "SRERROR" in l]
     assert len(sr) == 1 and sr[0].startswith("SRERROR strength_reduction: with a calibration"), sr
 
