@@ -9,10 +9,10 @@ Procedure (:func:`strength_reduction`)
    their strength from the materials).
 2. A *trial* at factor F (:func:`trial`) reloads that state, divides ``tanφ`` and ``c`` of every
    joint and every material by F (``tanφ_F = tanφ / F``, ``c_F = c / F``; the tensile strength
-   too if ``reduce_tensile``) and runs a
-   damped stage (NewtonIntegrator ``damping``, default 0.7) in chunks of *check* steps; after each
-   chunk the contacts made along a joint set (:func:`yade_rbsm.slope.set_joint_strength`) get the
-   set's strength divided by F (:func:`yade_rbsm.slope.apply_joint_sets`).
+   too if ``reduce_tensile``) and runs a damped stage (NewtonIntegrator ``damping``, default 0.7) in
+   chunks of *check* steps; after each chunk the contacts made along a joint set
+   (:func:`yade_rbsm.slope.set_joint_strength`) get the set's strength divided by F
+   (:func:`yade_rbsm.slope.apply_joint_sets`).
 3. **Failure criterion.** The trial *fails* if
 
    * the blocks whose displacement since the start of the trial exceeds ``d_fail`` (monitored
