@@ -396,9 +396,10 @@ def _warnings(trials, lo, hi, d_fail, max_steps):
                    "slowly fails the same way; a longer max_steps may raise the FS"
                    % (t_hi.F, max_steps, t_hi.ratio, t_hi.dmax, d_fail))
     if t_lo is not None and t_lo.dmax > 0.5 * d_fail:
-        out.append("the stable end F = %.4f moved %.3g m, more than half of d_fail = %g m: the runaway criterion is "
-                   "close to the slope's own deformation before failure; a larger d_fail may raise the FS"
-                   % (t_lo.F, t_lo.dmax, d_fail))
+        out.append("the stable end F = %.4f moved %.3g m, more than half of d_fail = %g m, before it stopped: the FS "
+                   "depends on d_fail here (a smaller one finds the onset of sliding, which limit equilibrium "
+                   "gives; a larger one lets the slope move and stop, by hardening or jamming, before it counts as "
+                   "failed)" % (t_lo.F, t_lo.dmax, d_fail))
     return out
 
 
