@@ -4,6 +4,7 @@ into O.bodies, bonding and breaking joints (crack, crack polylines), joint sets 
 strength, the unbalanced-force ratio and the gravity stage. Import these from ``yade_rbsm.slope``."""
 import json
 import math
+import numbers
 
 __all__ = ["build_scene", "break_crack", "joints_on", "break_joints", "set_joint_strength", "joint_sets",
            "apply_joint_sets", "bond_and_break", "unbalanced_ratio", "settle"]
@@ -137,6 +138,11 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
     from .checks import number
     from .geometry import points
     who = "set_joint_strength"
+    polylines = list(polylines)
+    first = polylines[0] if polylines else None
+    if hasattr(first, "__len__") and len(first) == 2 and all(isinstance(v, numbers.Real) for v in first):
+        raise ValueError("%s: polylines is a list of polylines, [[(x0, y0), (x1, y1), ...], ...]; this looks like "
+                         "one polyline (its first item is the point %r): give [polyline]" % (who, tuple(polylines[0])))
     polylines = [points("%s: polylines[%d]" % (who, k), l, 2) for k, l in enumerate(polylines)]
     if not polylines:
         raise ValueError("%s: no polylines given" % who)

@@ -58,7 +58,8 @@ if when == "errors":
                      (([plane],), dict(strength, friction_angle=math.pi / 2)),
                      (([plane],), dict(cohesion=c, friction_angle=0.0)),  # no default tensile strength
                      (([[(xd, yd)]],), strength),  # a polyline of one point
-                     (([],), strength)]:
+                     (([],), strength),
+                     ((plane,), strength)]:  # one polyline, not a list of them
         try:
             sl.set_joint_strength(*args, **kw)
             print("NO ERROR", kw)

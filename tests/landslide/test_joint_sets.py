@@ -77,9 +77,10 @@ def test_bad_joint_sets_are_refused_with_what_is_wrong():
                  timeout=120)
     assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
     errors = [l for l in p.stdout.splitlines() if l.startswith(("ERROR", "NO ERROR"))]
-    assert len(errors) == 7 and all(e.startswith("ERROR set_joint_strength: ") for e in errors), errors
+    assert len(errors) == 8 and all(e.startswith("ERROR set_joint_strength: ") for e in errors), errors
     for e, what in zip(errors, ["no joint lies on polylines[0]", "cohesion must be in [0", "friction_angle must be in [0",
-                                "give tensile_strength", "polylines[0]", "no polylines given", "refPos and refOri"]):
+                                "give tensile_strength", "polylines[0]", "no polylines given", "give [polyline]",
+                                "refPos and refOri"]):
         assert what in e, (what, e)
     assert "SETS 1 1" in p.stdout, p.stdout[-2000:]  # the set is kept with the scene (O.save, O.load)
     sr = [l for l in p.stdout.splitlines() if "SRERROR" in l]
