@@ -165,23 +165,12 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
             raise ValueError("%s: no joint lies on polylines[%d] %s (give the polyline the blocks were cut along, "
                              "after build_scene and bond_and_break; the joints are looked for where build_scene put "
                              "the blocks, State.refPos and refOri: were these reset since?)" % (who, k, polylines[k]))
-    tan_phi = math.tan(friction_angle)
-    done = set()
-    for js in found:
-        for I in js:
-            if (I.id1, I.id2) in done:
-                continue
-            done.add((I.id1, I.id2))
-            I.phys.cohesion = cohesion
-            I.phys.tanPhi = tan_phi
-            I.phys.tensileStrength = tensile_strength
-            if ductile is not None:
-                I.phys.ductile = bool(ductile)
+    joint_set = dict(polylines=[[list(p) for p in l] for l in polylines], tol=tol, cohesion=cohesion,
+                     tan_phi=math.tan(friction_angle), tensile_strength=tensile_strength, ductile=ductile)
+    done = {(I.id1, I.id2) for js in found for I in js}
+    _give(joint_set, [I for js in found for I in js])
     # kept with the scene (saved, and in O.saveTmp), for contacts made later along the set
-    sets = joint_sets()
-    sets.append(dict(polylines=[[list(p) for p in l] for l in polylines], tol=tol, cohesion=cohesion,
-                     tan_phi=tan_phi, tensile_strength=tensile_strength, ductile=ductile))
-    O.tags[_SETS_TAG] = json.dumps(sets)
+    O.tags[_SETS_TAG] = json.dumps(joint_sets() + [joint_set])
     if mpi.is_split():  # each joint once over the ranks (mpi.counted_here)
         return int(mpi.allreduce_sum([float(sum(1 for k in done if mpi.counted_here(O.interactions[k])))])[0])
     return len(done)
@@ -197,25 +186,31 @@ def joint_sets():
     return json.loads(O.tags[_SETS_TAG]) if _SETS_TAG in O.tags.keys() else []
 
 
-def apply_joint_sets(F=1.0, reduce_tensile=False):
-    """Give the contacts on the joint sets (:func:`joint_sets`) the set's friction, divided by *F*
-    (strength reduction's trial factor), and its cohesion and tensile strength (divided too, the
-    tensile strength only if *reduce_tensile*): contacts a block makes along a set as it slides take
-    their blocks' materials when they form. strength_reduction calls it between the chunks of every
-    trial; a dynamic run may call it from a PyRunner. Sets given later win where they overlap. Returns
-    the number of contacts changed."""
+def _give(js, joints, F=1.0, reduce_tensile=False):
+    """The strength of the joint set *js* (a :func:`joint_sets` entry), divided by *F* (the tensile
+    strength only if *reduce_tensile*), to *joints*. Returns how many changed."""
+    tan_phi, c = js["tan_phi"] / F, js["cohesion"] / F
+    t = js["tensile_strength"] / F if reduce_tensile else js["tensile_strength"]
     n = 0
-    for js in joint_sets():
-        tan_phi, c = js["tan_phi"] / F, js["cohesion"] / F
-        t = js["tensile_strength"] / F if reduce_tensile else js["tensile_strength"]
-        for I in joints_on(js["polylines"], js["tol"]):
-            ph = I.phys
-            if (ph.tanPhi, ph.cohesion, ph.tensileStrength) != (tan_phi, c, t):
-                ph.tanPhi, ph.cohesion, ph.tensileStrength = tan_phi, c, t
-                if js["ductile"] is not None:
-                    ph.ductile = bool(js["ductile"])
-                n += 1
+    for I in joints:
+        ph = I.phys
+        if (ph.tanPhi, ph.cohesion, ph.tensileStrength) != (tan_phi, c, t):
+            ph.tanPhi, ph.cohesion, ph.tensileStrength = tan_phi, c, t
+            n += 1
+        if js["ductile"] is not None:
+            ph.ductile = bool(js["ductile"])
     return n
+
+
+def apply_joint_sets(F=1.0, reduce_tensile=False, sets=None):
+    """Give the contacts on the joint sets (*sets*, default :func:`joint_sets`) the set's friction,
+    divided by *F* (strength reduction's trial factor), and its cohesion and tensile strength (divided
+    too, the tensile strength only if *reduce_tensile*): contacts a block makes along a set as it slides
+    take their blocks' materials when they form. strength_reduction calls it between the chunks of
+    every trial; a dynamic run may call it from a PyRunner. Sets given later win where they overlap.
+    Returns the number of contacts changed."""
+    return sum(_give(js, joints_on(js["polylines"], js["tol"]), F, reduce_tensile)
+               for js in (joint_sets() if sets is None else sets))
 
 
 def bond_and_break(sb):

@@ -224,13 +224,13 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     below = 0
     local = []
     from .slope_scene import apply_joint_sets, joint_sets
-    sets = ref.calibration is None and bool(joint_sets())  # contacts made along a joint set get its strength
+    sets = joint_sets() if ref.calibration is None else []  # contacts made along a joint set get its strength
     while steps < max_steps:
         n = min(check, max_steps - steps)
         advance(n)
         steps += n
         if sets:
-            apply_joint_sets(F, reduce_tensile)
+            apply_joint_sets(F, reduce_tensile, sets)
         d = {i: (O.bodies[i].state.pos - start[i]).norm() for i in ids}
         dmax = max(d.values())
         away = [i for i in ids if d[i] > d_fail]
@@ -295,13 +295,13 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     if reference_rotation is not None:
         reference_rotation = number(where, "reference_rotation", reference_rotation, 0, low_open=True)
         _check_rotation(ids if ids is not None else _free_ids(), reference_rotation, mass_fraction, verbose)
-    if calibration is not None:
-        kinds = {(I.phys.tanPhi, I.phys.cohesion) for I in omega.joints(O)}
-        if len(kinds) > 1:
-            raise ValueError("strength_reduction: with a calibration every joint gets the calibrated strength of "
-                             "the assembly, but the joints here have %d different strengths (joint sets from "
-                             "set_joint_strength, layers of other materials): reduce them without calibration"
-                             % len(kinds))
+    ref = _Reference(calibration, soil)
+    kinds = {v[:2] for v in ref.joints.values()}  # (tanPhi, cohesion)
+    if calibration is not None and len(kinds) > 1:
+        raise ValueError("strength_reduction: with a calibration every joint gets the calibrated strength of "
+                         "the assembly, but the joints here have %d different strengths (joint sets from "
+                         "set_joint_strength, layers of other materials): reduce them without calibration"
+                         % len(kinds))
     from .scene import time_stepper
     stepper = time_stepper()
     if density_scaling and stepper is None:
@@ -309,7 +309,6 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     old_scaling = stepper.densityScaling if stepper is not None else False
     if stepper is not None:
         stepper.densityScaling = bool(density_scaling)  # saved with the reference: on in every trial
-    ref = _Reference(calibration, soil)
     O.saveTmp(mark)
     r0 = _reference_ratio(mark, ids)
     if not r0 < reference_tol:
