@@ -60,10 +60,8 @@ namespace {
 	// and slid along a face: not bonded). So while the joint has never slipped the bond is the segment
 	// less the blocks' tangential travel since the joint formed; after a slip it only shrinks.
 	// Returns the bonded share of the current segment, which scales c and σt of the intact points.
-	// Cohesionless joints skip it (nothing to scale).
 	inline Real bondedFraction(RbsmPhys& p, const RbsmGeom& g, const rbsm::SegmentKinematics& kin, const Vector2r& tangent, Real dt)
 	{
-		if (p.cohesion == 0 && p.tensileStrength == 0) return 1;
 		p.tangentialTravel += kin.velocity(0.5).dot(tangent) * dt;
 		const Real unslid = std::max<Real>(0, g.length - std::abs(p.tangentialTravel));
 		if (p.bondedLength < 0 || p.plasticDissipation == 0) p.bondedLength = unslid;
@@ -144,11 +142,13 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	// reduced mass, 2·sqrt(kn·A·m), spread over the joint area (traction per velocity).
 	const bool damped    = dampingRatio > 0 && g.reducedMass > 0 && area > 0;
 	p.dampingCoefficient = damped ? dampingRatio * 2 * std::sqrt(p.kn * area * g.reducedMass) / area : 0;
-	const rbsm::SegmentKinematics kin    = g.kinematics();
-	const Vector2r                tangent = g.tangent();
-	const Real                    bonded  = bondedFraction(p, g, kin, tangent, scene->dt);
-	const JointStep j { rbsm::JointParams { p.kn, p.ks, bonded * p.cohesion, p.tanPhi, bonded * p.tensileStrength, p.ductile }, area, damped, kin,
-		            tangent, g.p1 - g.p0, scene->dt, scene->trackEnergy };
+	JointStep j { rbsm::JointParams { p.kn, p.ks, p.cohesion, p.tanPhi, p.tensileStrength, p.ductile }, area, damped, g.kinematics(), g.tangent(), g.p1 - g.p0,
+		      scene->dt, scene->trackEnergy };
+	if (p.cohesion != 0 || p.tensileStrength != 0) { // cohesionless joints have no bond to scale
+		const Real bonded = bondedFraction(p, g, j.kin, j.tangent, scene->dt);
+		j.params.cohesion *= bonded;
+		j.params.tensileStrength *= bonded;
+	}
 	spreadShearOverGrowth(p, g, n);
 	JointSums sum;
 	for (int k = 0; k < n; k++)
