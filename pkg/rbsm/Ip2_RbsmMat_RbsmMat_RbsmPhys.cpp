@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <sstream>
+#include <utility>
 
 namespace yade {
 
@@ -135,13 +137,28 @@ void RbsmPhys::preSave(RbsmPhys&)
 
 void RbsmPhys::postSave(RbsmPhys&) { shearTraction.clear(), normalTraction.clear(), intact.clear(), slipping.clear(), open.clear(); }
 
+void RbsmPhys::checkValue(const char* name, Real v)
+{
+	if (std::isfinite(v) && v >= 0) return;
+	std::ostringstream msg; // (%g-like: 1e-8 must not print as 0.000000)
+	msg << "RbsmPhys." << name << ": must be a finite number >= 0 (got " << v << ")";
+	throw std::invalid_argument(msg.str());
+}
+
 // After a load, or a constructor from Python with some of these given: the non-empty ones set the
-// points (all of one length).
+// points (all of one length). Otherwise kn or ks was set from Python (or updateAttrs ran): checked
+// (the caller puts the old value back when this throws) and counted, so that the stepper sees a
+// stiffer joint before it moves anything.
 void RbsmPhys::postLoad(RbsmPhys& self)
 {
+	for (const auto& [name, v] : { std::pair<const char*, Real> { "kn", kn }, { "ks", ks }, { "cohesion", cohesion }, { "tanPhi", tanPhi }, { "tensileStrength", tensileStrength } })
+		checkValue(name, v);
 	const size_t sizes[] = { shearTraction.size(), normalTraction.size(), intact.size(), slipping.size(), open.size() };
 	const size_t n       = *std::max_element(std::begin(sizes), std::end(sizes));
-	if (n == 0) return;
+	if (n == 0) { // not a load
+		edits.fetch_add(1, std::memory_order_relaxed);
+		return;
+	}
 	for (size_t m : sizes)
 		if (m != 0 && m != n) throw std::invalid_argument("RbsmPhys: the per-point values (shearTraction, normalTraction, intact, slipping, open) differ in length");
 	if (n > size_t(rbsm::kMaxIntegrationPoints)) throw std::invalid_argument("RbsmPhys: more than 8 integration points (" + std::to_string(n) + ")");

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -93,6 +94,16 @@ public:
 	std::vector<Real>   pyNormalTraction() const;
 	// Saving: the points go through the hidden attributes shearTraction ... open (the names and
 	// types of the per-point attributes of earlier versions), filled only around a save or load.
+	//! Counts the joints whose kn, ks were set from Python (assignment; also updateAttrs and a
+	//! constructor, which may set them; not O.load): RbsmTimeStepper makes a full estimate at its
+	//! next step when it changed (a stiffer joint). Strengths do not count: they leave the step alone,
+	//! and scripts set them mid-run (a full estimate there would change the steps a run takes).
+	static inline std::atomic<long> edits { 0 };
+	//! A joint value is finite and >= 0, else std::invalid_argument naming it (ValueError in Python).
+	static void checkValue(const char* name, Real v);
+	//! Python's setter of a strength: checked, nothing else (no postLoad, no edit counted).
+	template <Real RbsmPhys::*Member> static void setStrength(RbsmPhys& p, Real v);
+	template <Real RbsmPhys::*Member> static Real getValue(const RbsmPhys& p) { return p.*Member; }
 	void preSave(RbsmPhys&);
 	void postSave(RbsmPhys&);
 	void postLoad(RbsmPhys&);
@@ -103,11 +114,11 @@ public:
 		"(λ = diag(kn, ks)·δ, seed paper eq. 10), Mohr-Coulomb strength (eq. 11), and the state of each integration point. "
 		"Tractions are positive in compression (normal) and along the contact tangent (shear, traction on body 2). "
 		"Strength values may be changed per interaction, e.g. to model a pre-existing crack (:yref:`breakJoint<RbsmPhys.breakJoint>`).",
-		((Real, kn, 0, , "Normal spring stiffness per unit area [Pa/m] (Kawai: E′/(h1+h2))."))
-		((Real, ks, 0, , "Shear spring stiffness per unit area [Pa/m] (Kawai: 2G/(h1+h2))."))
-		((Real, cohesion, 0, , "Cohesion c of the joint while intact [Pa]."))
-		((Real, tanPhi, 0, , "tan φ of the joint friction angle."))
-		((Real, tensileStrength, 0, , "Tensile strength σt of the joint while intact [Pa]."))
+		((Real, kn, 0, Attr::triggerPostLoad, "Normal spring stiffness per unit area [Pa/m] (Kawai: E′/(h1+h2)); finite, >= 0. A change makes RbsmTimeStepper estimate the step again before the next step moves anything."))
+		((Real, ks, 0, Attr::triggerPostLoad, "Shear spring stiffness per unit area [Pa/m] (Kawai: 2G/(h1+h2)); finite, >= 0 (a change: as kn)."))
+		((Real, cohesion, 0, , "Cohesion c of the joint while intact [Pa]; finite, >= 0."))
+		((Real, tanPhi, 0, , "tan φ of the joint friction angle; finite, >= 0."))
+		((Real, tensileStrength, 0, , "Tensile strength σt of the joint while intact [Pa]; finite, >= 0."))
 		((bool, ductile, false, , "Slip keeps the cohesion (perfectly plastic); only tension breaks the joint (:yref:`RbsmMat.ductile`)."))
 		((Real, dampingCoefficient, 0, Attr::readonly, "Viscous traction per relative velocity [Pa·s/m] (from the law's dampingRatio; saved, so that RbsmTimeStepper.estimate() of a loaded scene is right before its first step)."))
 		((Real, normalForce, 0, Attr::readonly, "Resultant normal force of the joint [N] (> 0 compression), Σ σn_k a_k."))
@@ -124,6 +135,10 @@ public:
 		((Flags, open, , Attr::hidden, "Saved form of openPoints.")),
 		/*ctor*/ createIndex();,
 		/*py*/
+		// (the strengths again, with a checked setter: these replace the attributes' own properties)
+		.add_property("cohesion", &RbsmPhys::getValue<&RbsmPhys::cohesion>, &RbsmPhys::setStrength<&RbsmPhys::cohesion>, "Cohesion c of the joint while intact [Pa]; finite, >= 0.")
+		.add_property("tanPhi", &RbsmPhys::getValue<&RbsmPhys::tanPhi>, &RbsmPhys::setStrength<&RbsmPhys::tanPhi>, "tan φ of the joint friction angle; finite, >= 0.")
+		.add_property("tensileStrength", &RbsmPhys::getValue<&RbsmPhys::tensileStrength>, &RbsmPhys::setStrength<&RbsmPhys::tensileStrength>, "Tensile strength σt of the joint while intact [Pa]; finite, >= 0.")
 		.add_property("shearTraction", &RbsmPhys::pyShearTraction, &RbsmPhys::pySetShearTraction, "Shear traction τ_k at each integration point [Pa] (incremental elastic, returned to the Mohr-Coulomb surface on slip); may be set, one value per point.")
 		.add_property("normalTraction", &RbsmPhys::pyNormalTraction, "Normal traction σn_k at each integration point [Pa] (> 0 compression).")
 		.add_property("intactPoints", &RbsmPhys::pyIntact, "Per integration point: joint still intact (cohesion and tensile strength active).")
@@ -138,5 +153,11 @@ public:
 	REGISTER_CLASS_INDEX(RbsmPhys, IPhys);
 };
 REGISTER_SERIALIZABLE(RbsmPhys);
+
+template <Real RbsmPhys::*Member> void RbsmPhys::setStrength(RbsmPhys& p, Real v)
+{
+	checkValue(Member == &RbsmPhys::cohesion ? "cohesion" : Member == &RbsmPhys::tanPhi ? "tanPhi" : "tensileStrength", v);
+	p.*Member = v;
+}
 
 } // namespace yade

@@ -558,6 +558,8 @@ Real RbsmTimeStepper::limit()
 // A refused step: thrown, or under yade.mpy (deferErrors) kept for the sync engine that follows, which
 // stops every rank before NewtonIntegrator (a throw here would stop this rank alone and leave the others
 // waiting for it in their next exchange).
+long RbsmTimeStepper::jointEdits() { return RbsmPhys::edits.load(std::memory_order_relaxed); }
+
 void RbsmTimeStepper::refuse(const std::string& message)
 {
 	if (!deferErrors) throw std::runtime_error(message);
@@ -600,6 +602,7 @@ void RbsmTimeStepper::action()
 	const long made = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
 	if (densityScaling != massScaled) lastCheck = -1, massScaled = densityScaling; // switched: estimate now
 	if (densityScaling && targetDt != scaledTarget) lastCheck = -1;                 // a new target: estimate now
+	if (const long edits = jointEdits(); edits != editsSeen) lastCheck = -1, editsSeen = edits; // a joint's kn, ks set: estimate now
 	if (!densityScaling) massScale.clear();
 	// once per engine object, at the first step with interactions (or after O.load: the stepper is in
 	// every RBSM engine list, old saved scenes too); not again: the objects freed by one sort would

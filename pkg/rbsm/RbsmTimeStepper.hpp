@@ -81,7 +81,7 @@ public:
 		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bound ω² of its rows, the dashpot Σ c·A and the softer spring Σ k·A of its joints since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run)."))
 		((Real, scaledTarget, -1, Attr::hidden, "targetDt as of the last full estimate under densityScaling (another value makes a full estimate at once)."))
 		((std::vector<Real>, rowDiag, , Attr::hidden, "densityScaling: per body id, the own-block share of rowBounds' ω² (saved with it: a loaded scene keeps its scales and scales the joints it makes like the uninterrupted run).")),
-		/*ctor*/,
+		/*ctor*/ editsSeen = jointEdits();,
 		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the present joints [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
 		.def("limit", &RbsmTimeStepper::limit, "Runs a full estimate of the scene as it is now (joints, first contacts, NewtonIntegrator.damping) and returns :yref:`stableDt<RbsmTimeStepper.stableDt>` [s], the step this engine would allow; what yade_rbsm.critical_time_step() returns at safetyFactor=1.")
 		.def("checkNextStep", &RbsmTimeStepper::checkNextStep, "Makes the next run of this engine a full estimate (as at the first step), e.g. after a scene was merged from yade.mpy's ranks (yade_rbsm.mpi.to_serial), whose joints this engine has not seen.")
@@ -122,6 +122,8 @@ private:
 	std::vector<Real>             inradius; // per body id, from the last full estimate
 	std::vector<Real>             firstOmega2; // firstContactEstimate's ω² of each free block without joints (for scaleMasses)
 	long                          jointsSeen = -1;
+	long                          editsSeen  = -1; // RbsmPhys::edits at the last step (a joint's kn, ks set from Python since: a full estimate)
+	static long                   jointEdits();
 	struct BoundPose {
 		long iter = -1; // Bound::lastUpdateIter when c, s were taken
 		Real c = 1, s = 0;

@@ -120,12 +120,19 @@ def break_joints(polylines, tol=None, counted=None):
     return n
 
 
-def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=None, ductile=None, tol=None):
+def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=None, ductile=None, tol=None,
+                       normal_stiffness=None, shear_stiffness=None):
     """A joint set with its own strength: every joint on the *polylines* (:func:`joints_on`; e.g. a
     bedding plane given to a builder's ``joints=``) gets *cohesion* [Pa], tan(*friction_angle* [rad])
     and *tensile_strength* [Pa] (default: the Mohr-Coulomb apex cohesion / tan(friction_angle); a
     cohesive joint without tensile strength loses its cohesion at the first round-off tension), and
     RbsmPhys.ductile if *ductile* is given. The other joints keep what their blocks' materials gave.
+    *normal_stiffness*, *shear_stiffness* [Pa/m] (UDEC's jkn, jks), if given, replace the blocks' Kawai
+    springs on the set (RbsmPhys.kn, ks; the time step follows at once; strength reduction does not
+    reduce them). Give them before settling: the normal springs are total (traction = kn x overlap), so
+    a kn above that of a joint in compression is refused (its force would jump); a softer one is taken
+    (the blocks sink onto it). Contacts made later along the set take it too, unless it is stiffer
+    than theirs and they carry load by then (:func:`apply_joint_sets`).
     Call it after :func:`bond_and_break` (intact points keep their cohesion, broken ones stay broken);
     strength_reduction then reduces these strengths as any joint's. Contacts made later (a block
     sliding onto a new neighbour along the set) take their blocks' materials when they form: the set is
@@ -154,6 +161,8 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
                              "cohesion / tan(friction_angle) is infinite)" % who)
         tensile_strength = cohesion / math.tan(friction_angle) if cohesion > 0 else 0.0
     tensile_strength = number(who, "tensile_strength", tensile_strength, 0)
+    stiffness = [None if v is None else number(who, name, v, 0, low_open=True)
+                 for name, v in (("normal_stiffness", normal_stiffness), ("shear_stiffness", shear_stiffness))]
     from yade import O
     from . import mpi
     found = [joints_on([l], tol) for l in polylines]
@@ -166,7 +175,19 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
                              "after build_scene and bond_and_break; the joints are looked for where build_scene put "
                              "the blocks, State.refPos and refOri: were these reset since?)" % (who, k, polylines[k]))
     joint_set = dict(polylines=[[list(p) for p in l] for l in polylines], tol=tol, cohesion=cohesion,
-                     tan_phi=math.tan(friction_angle), tensile_strength=tensile_strength, ductile=ductile)
+                     tan_phi=math.tan(friction_angle), tensile_strength=tensile_strength, ductile=ductile,
+                     kn=stiffness[0], ks=stiffness[1])
+    if stiffness[0] is not None:
+        loaded = [I for js in found for I in js if _loaded_and_stiffer(I.phys, "kn", stiffness[0])]
+        n_loaded = int(mpi.allreduce_sum([float(len(loaded))])[0]) if mpi.is_split() else len(loaded)
+        if n_loaded:
+            e = ("e.g. bodies #%d and #%d: kn %g Pa/m, normal force %g N" % (loaded[0].id1, loaded[0].id2, loaded[0].phys.kn,
+                                                                            loaded[0].phys.normalForce)
+                 if loaded else "on other ranks")
+            raise ValueError("%s: normal_stiffness %g Pa/m is above the kn of %d joints of the set that carry load (%s): "
+                             "the normal springs are total (traction = kn x overlap), so their force would jump and throw "
+                             "the blocks apart; give the set's stiffness before settling (after bond_and_break)"
+                             % (who, stiffness[0], n_loaded, e))
     done = {(I.id1, I.id2) for js in found for I in js}
     _give(joint_set, [I for js in found for I in js])
     # kept with the scene (saved, and in O.saveTmp), for contacts made later along the set
@@ -181,7 +202,8 @@ _SETS_TAG = "yade_rbsm.joint_sets"
 
 def joint_sets():
     """The joint sets set_joint_strength gave the current scene (kept in O.tags, so saved with it):
-    [{polylines, tol, cohesion, tan_phi, tensile_strength, ductile}], in the order they were given."""
+    [{polylines, tol, cohesion, tan_phi, tensile_strength, ductile, kn, ks}], in the order they were given
+    (kn, ks None: the blocks' springs)."""
     from yade import O
     return json.loads(O.tags[_SETS_TAG]) if _SETS_TAG in O.tags.keys() else []
 
@@ -191,21 +213,35 @@ def _give(js, joints, F=1.0, reduce_tensile=False):
     strength only if *reduce_tensile*), to *joints*. Returns how many changed."""
     tan_phi, c = js["tan_phi"] / F, js["cohesion"] / F
     t = js["tensile_strength"] / F if reduce_tensile else js["tensile_strength"]
+    # the stiffness is not reduced by F (sets saved before it was part of them have none)
+    springs = [(name, js[name]) for name in ("kn", "ks") if js.get(name) is not None]
     n = 0
     for I in joints:
         ph = I.phys
-        if (ph.tanPhi, ph.cohesion, ph.tensileStrength) != (tan_phi, c, t):
+        changed = (ph.tanPhi, ph.cohesion, ph.tensileStrength) != (tan_phi, c, t)
+        if changed:
             ph.tanPhi, ph.cohesion, ph.tensileStrength = tan_phi, c, t
-            n += 1
+        for name, v in springs:  # only where it differs: a new stiffness makes the stepper estimate again
+            if getattr(ph, name) != v and not _loaded_and_stiffer(ph, name, v):
+                setattr(ph, name, v)
+                changed = True
         if js["ductile"] is not None:
             ph.ductile = bool(js["ductile"])
+        n += changed
     return n
+
+
+def _loaded_and_stiffer(ph, name, v):
+    """The normal springs are total (traction = kn x overlap): a stiffer kn on a joint in compression
+    would raise its force at once and throw its blocks apart (a 1 m layer settled on the rock's springs
+    and given a set's 83 x stiffer kn bounced for 200 000 steps); shear tractions are incremental."""
+    return name == "kn" and v > ph.kn and ph.normalForce > 0
 
 
 def apply_joint_sets(F=1.0, reduce_tensile=False, sets=None):
     """Give the contacts on the joint sets (*sets*, default :func:`joint_sets`) the set's friction,
     divided by *F* (strength reduction's trial factor), and its cohesion and tensile strength (divided
-    too, the tensile strength only if *reduce_tensile*): contacts a block makes along a set as it slides
+    too, the tensile strength only if *reduce_tensile*), and its stiffness if it has one: contacts a block makes along a set as it slides
     take their blocks' materials when they form. strength_reduction calls it between the chunks of
     every trial; a dynamic run may call it from a PyRunner. Sets given later win where they overlap.
     Returns the number of contacts changed."""
@@ -263,8 +299,9 @@ def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None, den
     ratio (:func:`unbalanced_ratio`) is below *tol*, checked every *check* steps, or *max_steps*.
     *density_scaling*: RbsmTimeStepper.densityScaling during the stage (the small blocks made heavier
     so that all run at the median block's step: the same equilibrium in fewer steps; the motion on the
-    way is not physical). Restores the previous damping and scaling. Returns (converged, steps, ratio).
-    Under yade.mpy every rank calls it (yade_rbsm.mpi.run, and a collective ratio)."""
+    way is not physical). Contacts made along a joint set (:func:`set_joint_strength`) get its
+    properties after every *check* steps (:func:`apply_joint_sets`). Restores the previous damping and
+    scaling. Returns (converged, steps, ratio). Under yade.mpy every rank calls it (yade_rbsm.mpi.run, and a collective ratio)."""
     from yade import O
     from .checks import count, number
     tol = number("settle", "tol", tol, 0, low_open=True)
@@ -282,10 +319,13 @@ def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None, den
     if stepper is not None:
         stepper.densityScaling = bool(density_scaling)
     steps, ratio = 0, float("inf")
+    sets = joint_sets()
     try:
         while steps < max_steps:
             mpi.run(check)
             steps += check
+            if sets:  # contacts made along a joint set take their blocks' materials when they form
+                apply_joint_sets(sets=sets)
             ratio = unbalanced_ratio()
             if progress:
                 progress(steps, ratio)

@@ -5,6 +5,8 @@
 #   yade-rbsm -n -x joint_set_wedge.py [voronoi|bricks] c_kPa phi_deg psi_deg [ductile|brittle] [before|after]
 #   yade-rbsm -n -x joint_set_wedge.py bricks 50 30 35 ductile errors   (bad input: prints ERROR <message>)
 #   yade-rbsm -n -x joint_set_wedge.py voronoi 50 30 35 ductile network  (a joint network: found again once settled?)
+#   yade-rbsm -n -x joint_set_wedge.py bricks 500 30 35 ductile stiff KN KS  (the set's own springs [Pa/m], before
+#     settling: the wedge's elastic slip and settlement on the plane against W sin(psi)/(KS L), W cos(psi)/(KN L))
 # Optional 7th and 8th arguments: the rock's Young's modulus [Pa] (default 1e9) and "nofs" (no strength
 # reduction). RESULT's "missed": joints of the plane bonded at the start that set_joint_strength did not set.
 import json
@@ -18,8 +20,9 @@ from yade_rbsm import slope as sl
 from yade_rbsm.strength_reduction import strength_reduction
 
 pattern, c_kpa, phi_deg, psi_deg, law, when = sys.argv[1:7]
-young = float(sys.argv[7]) if len(sys.argv) > 7 else 1e9
+young = float(sys.argv[7]) if len(sys.argv) > 7 and when != "stiff" else 1e9
 with_fs = not (len(sys.argv) > 8 and sys.argv[8] == "nofs")
+springs = dict(normal_stiffness=float(sys.argv[7]), shear_stiffness=float(sys.argv[8])) if when == "stiff" else {}
 c, phi, psi = float(c_kpa) * 1e3, math.radians(float(phi_deg)), math.radians(float(psi_deg))
 rho, g, H, beta = 2600.0, 9.81, 20.0, math.radians(65)
 y0, xt, xk = 4.0, 8.0, 26.0  # toe level, toe, tension crack
@@ -89,7 +92,7 @@ if when == "errors":
     except ValueError as e:
         print("ERROR", e)
     sys.exit(0)
-n_set = sl.set_joint_strength([plane], **strength) if when == "before" else 0
+n_set = sl.set_joint_strength([plane], **strength, **springs) if when in ("before", "stiff") else 0
 sl.settle(tol=1e-4, max_steps=60000, check=200, density_scaling=True)
 if when == "network":
     # the joints of the cuts found again on the settled slope, and what lies on a cut seen from either block's
@@ -108,6 +111,34 @@ if when == "network":
             and any(on_a_cut(I, O.bodies[i].state) for i in (I.id1, I.id2))}
     print("RESULT " + json.dumps(dict(on_cut=len(bonded_on_plane), found=len(found), missed=lost, seen=len(seen),
                                       unseen=len(seen - found))))
+    sys.exit(0)
+if when == "stiff":  # the wedge's mean displacement along and across the plane against the set's springs alone
+    wedge = [(xd, yd), (xk, yk), (xk, y0 + H), (xcr, y0 + H)]
+
+    def inside(p):
+        return all((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) >= 0
+                   for a, b in zip(wedge, wedge[1:] + wedge[:1]))
+    def mean_displacement(blocks):
+        m = sum(b.state.mass for b in blocks)
+        return m, [sum(b.state.mass * (b.state.pos[k] - b.state.refPos[k]) for b in blocks) / m for k in (0, 1)]
+
+    def below(p):  # within 3 m under the plane, between daylight and crack
+        d = (p[0] - xd) * math.sin(psi) - (p[1] - yd) * math.cos(psi)  # distance below the plane
+        return 0 < d < 3.0 and xd < p[0] < xk
+    m, uw = mean_displacement([b for b in O.bodies if b.dynamic and inside(b.state.refPos)])
+    _, uf = mean_displacement([b for b in O.bodies if b.dynamic and below(b.state.refPos)])
+    u = [uw[k] - uf[k] for k in (0, 1)]  # the wedge relative to the rock under the plane
+    t = (math.cos(psi), math.sin(psi))  # up the plane
+    L = math.hypot(xk - xd, yk - yd)
+    W = m * g
+    set_joints = sl.joints_on([plane])
+    print("RESULT " + json.dumps(dict(
+        slip=-(u[0] * t[0] + u[1] * t[1]), settlement=-(-u[0] * t[1] + u[1] * t[0]),
+        slip_closed=W * math.sin(psi) / (springs["shear_stiffness"] * L),
+        settlement_closed=W * math.cos(psi) / (springs["normal_stiffness"] * L),
+        n_set=n_set, kn=sorted({I.phys.kn for I in set_joints}), ks=sorted({I.phys.ks for I in set_joints}),
+        slipping=sum(I.phys.nSlipping for I in set_joints),
+        sets=sl.joint_sets())))
     sys.exit(0)
 if when == "after":
     n_set = sl.set_joint_strength([plane], **strength)

@@ -178,6 +178,46 @@ elif case == "python_args":
     it = O.iter
     out["calls"] = {k: attempt(f) for k, f in calls.items()}
     out["steps"] = O.iter - it
+elif case == "phys_stiffened":
+    # a running scene's joints made 1e4 times stiffer (a user's joint set, or a script): the step
+    # must follow at once, as after RbsmTimeStepper.checkNextStep(), not at the next full estimate
+    O.engines = engines(gravity=(0, -9.81, 0), damping=0.0)
+    for k in range(3):  # a column on the block at x 0..1
+        O.bodies.append(polygon2d([(0, 1 + k), (1, 1 + k), (1, 2 + k), (0, 2 + k)], m))
+    run(350)  # (between two full estimates: the stepper's interval is 100)
+    out["dt_before"] = O.dt
+    for I in O.interactions:
+        if I.isReal:
+            I.phys.kn *= 1e4
+            I.phys.ks *= 1e4
+    if params().get("manual"):
+        [e for e in O.engines if type(e).__name__ == "RbsmTimeStepper"][0].checkNextStep()
+    O.step()
+    out["dt_after"] = O.dt
+    run(300)
+    out["pos"] = [list(b.state.pos) for b in O.bodies]
+elif case == "phys_bad_values":
+    # every checked joint value, through assignment and updateAttrs: refused naming it, old value kept
+    I = [I for I in O.interactions if I.isReal][0]
+    names = ["kn", "ks", "cohesion", "tanPhi", "tensileStrength"]
+    old = {k: getattr(I.phys, k) for k in names}
+    out["assign"], out["update"], out["kept"] = {}, {}, {}
+    for k in names:
+        for v in (nan, -1.0, float("inf")):
+            out["assign"][k + repr(v)] = attempt(lambda: setattr(I.phys, k, v))
+            out["update"][k + repr(v)] = attempt(lambda: I.phys.updateAttrs({k: v}))
+        out["kept"][k] = getattr(I.phys, k) == old[k]
+    out["ctor"] = attempt(lambda: RbsmPhys(kn=-5.0))
+    out["valid"] = attempt(lambda: setattr(I.phys, "cohesion", 1e3))
+    run(200)
+elif case == "phys_load_bad_file":
+    path = os.path.join(params()["tmp"], "bad.xml")
+    O.save(path)
+    text = open(path).read()
+    i = text.index("<kn>")  # the first joint's normal stiffness, made negative
+    text = text[:i] + "<kn>-1" + text[text.index("<", i + 4):]
+    open(path, "w").write(text)
+    out["refused"] = attempt(lambda: O.load(path))
 else:
     raise SystemExit("unknown case " + case)
 emit(out)
