@@ -23,7 +23,9 @@ namespace yade {
 YADE_PLUGIN((RbsmTimeStepper));
 
 namespace {
-	constexpr size_t kRow = 3; // rowBounds per body: Gershgorin ω² of its rows, Σ c·A, Σ min(kn, ks)·A of its joints
+	// rowBounds per body: the Gershgorin bounds of its rows, ω² (springs) and λ (dashpots), and a slot
+	// that older builds filled (Σ min(kn, ks)·A): a file with it is estimated anew (postLoad)
+	constexpr size_t kRow = 3;
 
 	bool          isFixed(const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL; }
 	rbsm::DynBody dynBody(const State& s) { return rbsm::DynBody { s.mass, s.inertia.z(), s.pos.head<2>(), isFixed(s) }; }
@@ -101,6 +103,12 @@ void RbsmTimeStepper::postLoad(RbsmTimeStepper&)
 	if (!(maxDt > 0)) throw std::invalid_argument("RbsmTimeStepper.maxDt: must be > 0 (got " + std::to_string(maxDt) + ")");
 	if (!(std::isfinite(maxStepMotion) && maxStepMotion >= 0))
 		throw std::invalid_argument("RbsmTimeStepper.maxStepMotion: must be a finite fraction >= 0 (got " + std::to_string(maxStepMotion) + "; 0 = no check)");
+	// rows of an older build (its dashpot slots meant other sums): a full estimate at the next step
+	for (size_t k = 2; k < rowBounds.size(); k += kRow)
+		if (rowBounds[k] != 0) {
+			rowBounds.clear(), lastCheck = -1;
+			break;
+		}
 }
 
 // The joint as the kernel's stiffness sees it: the segment it reaches once a closing corner lies flat
@@ -156,21 +164,37 @@ Real RbsmTimeStepper::firstContactSafety() const { return impactsMatter() ? impa
 bool RbsmTimeStepper::mayImpact(const RbsmPhys& p) const { return impactsMatter() && p.nIntact() == 0; }
 
 // Joint dashpots (Law2's dampingRatio) lower the limit of the central-difference scheme, whose
-// velocity is half a step behind: dt ≤ (2/ω)(√(1+ξ²) − ξ) for a mode of frequency ω and damping
-// ratio ξ. Every eigenvalue lies below the Gershgorin bound ω̂_b² of some block b; for that block
-// the ratio is taken as ξ_b = β_b ω̂_b / 2, β_b = Σ c A / Σ k A over its joints (dashpot over the
-// softer spring). This is an estimate, not a bound. The bound through the whole damping matrix (C ≤
-// β K, β = max c/k of a single joint) is dominated by short corner joints, whose dashpots are stiff
-// per area but act on almost no area and belong to soft modes, and shrank the step of a brick wall
-// 30-fold (docs/benchmarks.md). tests/robustness/test_timestep.py checks ξ = 0.1, 0.3, 1.0.
+// velocity is half a step behind: dt ≤ (2/ω)(√(1+ξ²) − ξ) = 2/(√(ω²+γ²) + γ) for a mode of frequency
+// ω and decay rate γ = ξω (m ẍ + C ẋ + K x: γ = C/2m), which falls as ω or γ grows. So the Gershgorin
+// bounds of both, ω̂_b² of M^-½ K M^-½ and λ̂_b of M^-½ C M^-½ (C the dashpots, c times the joint's
+// present area at each point, as the law applies them), γ̂_b = λ̂_b/2, give each block's step. This
+// is an estimate, not a bound (the modes of K and C differ). A corner's dashpot is stiff per area
+// but acts on almost no area: counted on the length its springs reach once flat (ξ_b = c/k ω̂/2) it
+// took the step of a corner landing 100 times down (tests/robustness/test_timestep.py).
 Real RbsmTimeStepper::blockDt(size_t id) const
 {
-	const Real w2 = rowBounds[kRow * id], dashpot = rowBounds[kRow * id + 1], spring = rowBounds[kRow * id + 2];
+	const Real w2 = rowBounds[kRow * id], gamma = rowBounds[kRow * id + 1] / 2;
 	if (!(w2 > 0)) return std::numeric_limits<Real>::infinity();
-	const Real w = std::sqrt(w2), xi = spring > 0 ? dashpot / spring * w / 2 : 0;
-	// √(1+ξ²) − ξ as 1/(√(1+ξ²) + ξ): the difference cancels to 0 for ξ ≳ 1e8 (a stiff dashpot
-	// is a short step, not an infinitely stiff joint); hypot keeps ξ² from overflowing.
-	return 2 / w / (std::hypot(Real(1), xi) + xi);
+	// (hypot: no overflow of γ² for a stiff dashpot, which is a short step, not an infinitely stiff joint)
+	return 2 / (std::hypot(std::sqrt(w2), gamma) + gamma);
+}
+
+// The joint's dashpots as the kernel's stiffness sees springs (kn = ks = c per area) at the rule's
+// points on the present segment, with the areas the law gives them; false without dashpots.
+bool RbsmTimeStepper::jointDashpots(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const
+{
+	const RbsmGeom* g;
+	const RbsmPhys* p;
+	if (!rbsmJoint(I, g, p) || !g->rule || !(p->dampingCoefficient > 0)) return false;
+	c.body1 = body1, c.body2 = body2;
+	c.normal = g->normal, c.tangent = g->tangent();
+	c.kn = c.ks = p->dampingCoefficient;
+	c.points.clear(), c.areas.clear();
+	for (int k = 0; k < g->nPoints(); k++) {
+		c.points.push_back(g->p0 + g->rule->s[k] * (g->p1 - g->p0));
+		c.areas.push_back(g->rule->w[k] * g->length * g->thickness);
+	}
+	return true;
 }
 
 // Under yade.mpy a worker (Scene.subdomain > 0) holds its own blocks and copies of its neighbours'
@@ -205,7 +229,7 @@ Real RbsmTimeStepper::estimate()
 	dynBodies.clear(), dynIds.clear();
 	dynIndex.assign(bodies.size(), -1); // body id -> index in dynBodies
 	rowBounds.assign(kRow * bodies.size(), 0);
-	size_t nContacts = 0;
+	size_t nContacts = 0, nDashpots = 0;
 	for (const Interaction* I : jointsByIds([](const Interaction&) { return true; })) {
 		const RbsmGeom* g;
 		const RbsmPhys* p;
@@ -224,24 +248,22 @@ Real RbsmTimeStepper::estimate()
 		rbsm::DynContact& c = dynContacts[nContacts];
 		if (!jointAsDynContact(*I, ends[0], ends[1], c)) continue;
 		nContacts++;
-		if (p->dampingCoefficient > 0) {
-			Real area = 0;
-			for (Real a : c.areas) area += a;
-			for (Body::id_t id : { I->getId1(), I->getId2() }) {
-				rowBounds[kRow * id + 1] += p->dampingCoefficient * area;
-				rowBounds[kRow * id + 2] += std::min(p->kn, p->ks) * area;
-			}
-		}
+		if (dashpots.size() <= nDashpots) dashpots.emplace_back();
+		if (jointDashpots(*I, ends[0], ends[1], dashpots[nDashpots])) nDashpots++;
 	}
 	dynContacts.resize(nContacts);
+	dashpots.resize(nDashpots);
 	std::vector<Real> omega2, diag2; // Gershgorin bound of each block's rows, and its own block's share
 	rbsm::criticalTimeStepGershgorin(dynBodies, dynContacts, &omega2, densityScaling ? &diag2 : nullptr);
+	std::vector<Real> lambdaC; // the dashpots' bound of each block's rows (only where there are any)
+	if (nDashpots > 0) rbsm::criticalTimeStepGershgorin(dynBodies, dashpots, &lambdaC);
 	criticalDt   = std::numeric_limits<Real>::infinity();
 	criticalBody = -1;
 	if (densityScaling) rowDiag.assign(bodies.size(), 0);
 	for (size_t b = 0; b < dynIds.size(); b++) {
 		const size_t id         = size_t(dynIds[b]);
 		rowBounds[kRow * id] = omega2[b];
+		if (nDashpots > 0) rowBounds[kRow * id + 1] = lambdaC[b];
 		if (densityScaling) rowDiag[id] = diag2[b];
 		if (!ownedHere(*bodies[id])) continue;
 		const Real dt = blockDt(id);
@@ -256,25 +278,20 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 {
 	const auto& bodies = scene->bodies->body;
 	boundsHold(bodies.size());
-	rbsm::DynContact                 c;
+	rbsm::DynContact                 c, d;
 	const Real                       inf     = std::numeric_limits<Real>::infinity();
 	const bool                       rescale = scalesHold(bodies.size()); // density scaling: the joints' blocks too
 	for (const Interaction* I : jointsByIds([this](const Interaction& J) { return J.iterMadeReal == scene->iter; })) {
 		const Body::id_t                 id1 = I->getId1(), id2 = I->getId2();
 		const std::vector<rbsm::DynBody> pair { dynBody(*bodies[id1]), dynBody(*bodies[id2]) };
 		if (!jointAsDynContact(*I, 0, 1, c)) continue;
-		Real add[2], diag[2];
+		Real add[2], diag[2], addC[2] = { 0, 0 };
 		rbsm::contactRowBounds(pair, c, add[0], add[1], &diag[0], &diag[1]);
-		const RbsmPhys& p    = static_cast<const RbsmPhys&>(*I->phys);
-		Real            area = 0;
-		for (Real a : c.areas) area += a;
+		if (jointDashpots(*I, 0, 1, d)) rbsm::contactRowBounds(pair, d, addC[0], addC[1]);
 		for (int side = 0; side < 2; side++) {
 			const Body::id_t id = side == 0 ? id1 : id2;
 			rowBounds[kRow * id] += add[side];
-			if (p.dampingCoefficient > 0) {
-				rowBounds[kRow * id + 1] += p.dampingCoefficient * area;
-				rowBounds[kRow * id + 2] += std::min(p.kn, p.ks) * area;
-			}
+			rowBounds[kRow * id + 1] += addC[side];
 			if (rescale) { // its rows grew: its scale again, at the same target
 				rowDiag[id] += diag[side];
 				raiseMassScale(size_t(id), massScaleOf(size_t(id)));
@@ -485,7 +502,12 @@ void RbsmTimeStepper::reportMotion(const Body& b, Real motion, Real r)
 		msg << "yade-rbsm: ERROR: RbsmTimeStepper: body #" << b.id << " moves by " << motion << " m in one step at step " << scene->iter
 		    << " (velocity " << s.vel.head<2>().norm() << " m/s, angular velocity " << s.angVel.z() << " rad/s, O.dt = " << scene->dt
 		    << " s), more than maxStepMotion = " << maxStepMotion << " of its inner radius " << r
-		    << " m: it can pass through other blocks (tunnelling) or the scene is exploding; the run stops after step " << scene->iter
+		    << " m: it can pass through other blocks (tunnelling) or the scene is exploding";
+		// a block without joints is not scaled: it falls at the median block's step (a 0.1 mm pebble)
+		if (densityScaling && !(size_t(kRow * b.id) < rowBounds.size() && rowBounds[kRow * b.id] > 0))
+			msg << " (densityScaling runs every block at the step of the median one, " << scaledDt
+			    << " s, and this free block has no joint to scale it by yet: a smaller targetDt, or no such small free blocks)";
+		msg << "; the run stops after step " << scene->iter
 		    << (last ? "; further such errors are not shown" : "");
 		return msg.str();
 	});
@@ -578,7 +600,7 @@ void RbsmTimeStepper::action()
 	// (first: also in a step that a bad block below ends early, since the recorder would still run)
 	vtkRecorderGuard.check(*scene);
 	// Per-body pass (issue 15), every step, on this thread: a reshaped block gets the mass of its new
-	// shape (ReshapedBlocks.hpp); a block whose state the model cannot integrate is reported by id
+	// shape, and a mass or inertia set by a script is seen (ReshapedBlocks.hpp); a block whose state the model cannot integrate is reported by id
 	// and the run stops after this step (BlockStateCheck.hpp), without the estimate below, which
 	// would throw without naming the body. It runs before the estimate and checkMotion (which read
 	// the masses and inner radii), so it is a pass of its own.
@@ -596,6 +618,7 @@ void RbsmTimeStepper::action()
 		if (bad) return;
 		// a lighter block may need a shorter step now, its joints were made anew (their phys
 		// again, without a new iterMadeReal) and its inner radius changed: a full estimate now
+		// (a mass set by hand: 0.1 x mid-interval tore a bonded joint before the next estimate)
 		if (reshaped) lastCheck = -1;
 	}
 	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: estimate now)

@@ -28,7 +28,8 @@ public:
 		"times its tributary area), bounded from above by the block Gershgorin theorem (Feingold & Varga 1962) on "
 		"M^-½ K M^-½. A joint whose incident block touches by a corner that is closing by rotation counts with the length "
 		"it reaches once flat (the shorter of its two edges), not its present one. With joint dashpots (Law2's "
-		"dampingRatio) the limit is multiplied by √(1+ξ²) − ξ, ξ the damping ratio of each block's fastest mode. A full "
+		"dampingRatio) each block's limit is 2/(√(ω̂²+γ̂²) + γ̂) = (2/ω̂)(√(1+ξ²) − ξ), γ̂ half the Gershgorin bound of "
+		"M^-½ C M^-½ for the dashpots on the joints' present areas (ξ = γ̂/ω̂). A full "
 		"estimate runs every :yref:`interval<RbsmTimeStepper.interval>` steps; a joint made in between raises the bounds of "
 		"its two blocks at the step it is made (the Gershgorin terms add up), before anything moves;\n"
 		"* the first contacts (:yref:`firstContactDt<RbsmTimeStepper.firstContactDt>`): the stiffest single joint each free "
@@ -78,7 +79,7 @@ public:
 		((Real, stepDt, std::numeric_limits<Real>::infinity(), (Attr::readonly | Attr::noSave), "The step chosen at the last run [s]: min(stableDt, maxDt, the travel limit of maxStepMotion); what setDt sets (inf: no block of this rank bounds it). Under yade.mpy the sync engine sets O.dt to its minimum over the ranks."))
 		((bool, orderInteractions, true, , "Sort the interactions by body ids, in the container and in memory (MemoryOrder.hpp), once, at the first step of this engine that has interactions (so also right after O.load). The collider makes them in sweep order and O.load interleaves them with the bodies, which made a contact-step 1.3-1.7x slower at 10^4-10^5 blocks (docs/benchmarks.md). An interaction held elsewhere (a Python variable) keeps its object. False: YADE's order, as before; results differ by the order of summation only."))
 		((long, orderedAt, -1, (Attr::readonly | Attr::noSave), "Step at which :yref:`orderInteractions<RbsmTimeStepper.orderInteractions>` sorted the interactions (-1: not yet by this engine object; under yade.mpy the step at which it was skipped)."))
-		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bound ω² of its rows, the dashpot Σ c·A and the softer spring Σ k·A of its joints since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run)."))
+		((std::vector<Real>, rowBounds, , Attr::hidden, "Per body id: the Gershgorin bounds of its rows, ω² of the springs and λ of the joints' dashpots, and an unused slot, since the last full estimate (saved, so that a loaded scene continues like the uninterrupted run)."))
 		((Real, scaledTarget, -1, Attr::hidden, "targetDt as of the last full estimate under densityScaling (another value makes a full estimate at once)."))
 		((std::vector<Real>, rowDiag, , Attr::hidden, "densityScaling: per body id, the own-block share of rowBounds' ω² (saved with it: a loaded scene keeps its scales and scales the joints it makes like the uninterrupted run).")),
 		/*ctor*/ editsSeen = jointEdits();,
@@ -107,6 +108,7 @@ private:
 	template <class Keep> const std::vector<const Interaction*>& jointsByIds(Keep keep);
 	Real firstContactEstimate(); // (also fills firstOmega2)
 	bool jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
+	bool jointDashpots(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
 	bool mayImpact(const RbsmPhys& p) const;
 	bool impactsMatter() const;
 	Real firstContactSafety() const;
@@ -118,7 +120,7 @@ private:
 	// scene has grown (not saved; the engine runs on one thread)
 	std::vector<rbsm::DynBody>    dynBodies;
 	std::vector<int>              dynIndex, dynIds;
-	std::vector<rbsm::DynContact> dynContacts;
+	std::vector<rbsm::DynContact> dynContacts, dashpots;
 	std::vector<Real>             inradius; // per body id, from the last full estimate
 	std::vector<Real>             firstOmega2; // firstContactEstimate's ω² of each free block without joints (for scaleMasses)
 	long                          jointsSeen = -1;

@@ -6,17 +6,10 @@
 
 namespace yade {
 
-bool followReshape(Body& b, const BodyContainer& bodies)
-{
-	if (!b.shape || !b.state || b.shape->getClassIndex() != Polygon2D::getClassIndexStatic()) return false;
-	Polygon2D& p = static_cast<Polygon2D&>(*b.shape);
-	if (p.revision == p.followed.revision) return false;
-	const Real volume = p.thickness * p.area, polar = p.thickness * p.polarMoment;
-	const bool rescale = p.followed.revision >= 0 && p.followed.volume > 0 && p.followed.polar > 0;
-	if (rescale) {
-		State& s = *b.state;
-		s.mass *= volume / p.followed.volume;
-		s.inertia *= polar / p.followed.polar;
+namespace {
+	// The joints' reduced masses (contact damping) from the blocks' masses of now.
+	void updateReducedMasses(const Body& b, const BodyContainer& bodies)
+	{
 		for (const auto& idI : b.intrs) {
 			const Interaction& I = *idI.second;
 			if (!I.geom || I.geom->getClassIndex() != RbsmGeom::getClassIndexStatic()) continue;
@@ -25,7 +18,28 @@ bool followReshape(Body& b, const BodyContainer& bodies)
 			if (b1 && b2) static_cast<RbsmGeom&>(*I.geom).reducedMass = RbsmGeom::reducedMassOf(*b1->state, *b2->state);
 		}
 	}
-	p.followed = Polygon2D::Followed { p.revision, volume, polar };
+}
+
+bool followReshape(Body& b, const BodyContainer& bodies)
+{
+	if (!b.shape || !b.state || b.shape->getClassIndex() != Polygon2D::getClassIndexStatic()) return false;
+	Polygon2D& p = static_cast<Polygon2D&>(*b.shape);
+	State&     s = *b.state;
+	if (p.revision == p.followed.revision) {
+		if (s.mass == p.followed.mass && s.inertia.z() == p.followed.inertia) return false; // the usual block
+		// mass or inertia set by a script
+		updateReducedMasses(b, bodies);
+		p.followed.mass = s.mass, p.followed.inertia = s.inertia.z();
+		return true;
+	}
+	const Real volume = p.thickness * p.area, polar = p.thickness * p.polarMoment;
+	const bool rescale = p.followed.revision >= 0 && p.followed.volume > 0 && p.followed.polar > 0;
+	if (rescale) {
+		s.mass *= volume / p.followed.volume;
+		s.inertia *= polar / p.followed.polar;
+		updateReducedMasses(b, bodies);
+	}
+	p.followed = Polygon2D::Followed { p.revision, volume, polar, s.mass, s.inertia.z() };
 	return rescale;
 }
 

@@ -10,7 +10,7 @@ __all__ = ["polygon_properties", "polygon2d"]
 
 def _describe(pts, most=4):
     """Short text naming a polygon by its first vertices, for error messages."""
-    shown = ", ".join("(%g, %g)" % p for p in pts[:most])
+    shown = ", ".join("(%.12g, %.12g)" % p for p in pts[:most])  # (map coordinates: 1 mm apart at 4e6 m)
     return "[" + shown + (", ... %d vertices" % len(pts) if len(pts) > most else "") + "]"
 
 
@@ -58,8 +58,20 @@ def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=F
                 if "self-intersecting" in str(e):
                     raise
         area, (cx, cy), j = polygon_properties(pts)
+        local = [(x - cx, y - cy) for x, y in pts]
+        ox, oy = pts[0]
+        extent = max(max(abs(x - ox), abs(y - oy)) for x, y in pts)
+        if max(abs(ox), abs(oy)) > 1e4 * extent:
+            # far from the origin (map coordinates: a 1 mm block at 4e6 m) x - cx has the round-off of x,
+            # 1e-9 m, which moved the block's centroid off its body's origin: the offsets to the first
+            # vertex (exact) less the centroid's offset instead. (Not everywhere: near the origin the blocks
+            # of existing scenes keep their vertices to the bit, and their bonds, which depend on them.)
+            offsets = [(x - ox, y - oy) for x, y in pts]
+            area, (rx, ry), j = polygon_properties(offsets)
+            local = [(x - rx, y - ry) for x, y in offsets]
+            cx, cy = ox + rx, oy + ry
         # Polygon2D checks convexity, orientation and degeneracy and names the problem (ValueError).
-        shape = wrapper.Polygon2D(vertices=[(x - cx, y - cy) for x, y in pts], thickness=thickness, wire=wire)
+        shape = wrapper.Polygon2D(vertices=local, thickness=thickness, wire=wire)
     except ValueError as e:
         # name the block by its world vertices: the body has no id before it is appended
         raise ValueError("polygon2d(%s): %s" % (_describe(pts), e)) from None

@@ -140,3 +140,13 @@ def test_joint_values_checked_on_every_path():
 def test_load_of_a_file_with_a_bad_joint_refused_naming_it(tmp_path):
     r, _ = case("phys_load_bad_file", tmp_path)
     assert r["refused"] and "RbsmPhys.kn" in r["refused"][1], r
+
+
+@pytest.mark.parametrize("change", ["mass", "kn"])
+def test_a_system_made_faster_between_estimates_keeps_its_energy(change):
+    # scenes/stale_step.py: masses x 0.01 or joint springs x 100 mid-interval, no energy added by the change
+    r = run_scene("stale_step", {"change": change})
+    assert r["finite"] and r["intact"] == 2, r  # the bond held (torn before: 5.6 J and 726 J from 1.2e-5 J)
+    # mass: the same kinetic and elastic energy after the change; kn: the joint's elastic energy x 100
+    assert r["peak"] < (2 if change == "mass" else 100) * r["before"], r
+    assert r["dt_after"] < r["dt_before"] / 5, r

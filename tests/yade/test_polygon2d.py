@@ -185,3 +185,29 @@ report(iter=O.iter, contacts=O.interactions.countReal())
     for body in (0, 1):
         assert "body #%d is in a periodic cell (O.periodic): Polygon2D blocks do not support periodic cells" % body in p.stderr, p.stderr[-3000:]
     assert results(p) == [{"iter": 1, "contacts": 0}]
+
+
+def test_blocks_at_map_coordinates_from_1_mm_to_10_m():
+    """Blocks drawn in UTM coordinates (x 512 345 m, y 4 212 345 m; a new user's trial 14b): the local
+    vertices were the world ones less the centroid, with round-off eps x 4e6 = 1e-9 m: 0.1 m, 1 cm and
+    1 mm blocks were refused at random ("the centroid must be at the origin of the body frame"), and a
+    file io.export_blocks wrote of them did not import. Now every size is taken, with the closed-form area."""
+    (r,) = run_ok("""
+from yade_rbsm import polygon2d
+m = RbsmMat()
+X, Y = 512345.678, 4212345.678
+out = {}
+for s in [10.0, 1.0, 0.1, 0.05, 0.01, 1e-3]:
+    pts = [(X, Y), (X + s, Y), (X + s, Y + 0.6 * s), (X + 0.2 * s, Y + s)]
+    try:
+        b = polygon2d(pts, m)
+        out[repr(s)] = [b.shape.area, b.state.pos[0] - X, b.state.pos[1] - Y]
+    except ValueError as e:
+        out[repr(s)] = str(e)
+report(**out)
+""")
+    for s, v in r.items():
+        s = float(s)
+        assert isinstance(v, list), (s, v)
+        assert v[0] == pytest.approx(0.74 * s * s, rel=1e-6), (s, v)  # shoelace of (0,0) (1,0) (1,0.6) (0.2,1)
+        assert 0 < v[1] < s and 0 < v[2] < s, (s, v)
