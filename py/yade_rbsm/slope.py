@@ -118,7 +118,7 @@ def brick_blocks(surface, base, brick_w, brick_h, joints=(), crack=None, foundat
         return all(b[0] > a[0] for a, b in zip(l[:-1], l[1:]))
     generic = [c for c in cracks if not mono(c)] + [j for j in joints if not mono(j)]
     cut_tops = [t for t, _ in layers if t is not None]
-    all_cracks = cracks
+    all_cracks, given_joints = cracks, joints
     joints = [j for j in joints if mono(j)] + [c for c in cracks if mono(c)] + cut_tops
     x0, xn = surf[0][0], surf[-1][0]
     ytop = max(y for _, y in surf)
@@ -172,8 +172,8 @@ def brick_blocks(surface, base, brick_w, brick_h, joints=(), crack=None, foundat
         _assign_layers(blocks, layers)
     slope_area = region_area(surf, base)
     blocks += _fixed_blocks(surf, base, foundation, wall)
-    return SlopeBlocks(blocks, surf, float(base), slope_area, dropped, crack, joints, cracks=all_cracks, layers=layers,
-                       polygon=slope_polygon(surf, base), pattern="bricks")
+    return SlopeBlocks(blocks, surf, float(base), slope_area, dropped, crack, given_joints, cracks=all_cracks,
+                       layers=layers, polygon=slope_polygon(surf, base), pattern="bricks")
 
 
 def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), layers=(), foundation=1.0, wall=1.0,

@@ -292,6 +292,9 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
                                                                     math.pi / 2, low_open=True, high_open=True))
     if not (ids if ids is not None else _free_ids()):
         raise ValueError("strength_reduction: no free blocks to monitor (empty scene, or every block fixed)")
+    from . import omega
+    if not any(omega.newton(O).gravity):  # every trial would be "stable": no mechanism without a weight
+        raise ValueError("strength_reduction: NewtonIntegrator.gravity is zero: a slope has no weight to fail under")
     if reference_rotation is not None:
         reference_rotation = number(where, "reference_rotation", reference_rotation, 0, low_open=True)
         _check_rotation(ids if ids is not None else _free_ids(), reference_rotation, mass_fraction, verbose)
@@ -320,7 +323,8 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
                          % (r0, reference_tol))
     if verbose and r0 > 10 * tol:
         print("  strength reduction: the reference state is not in equilibrium at its own strengths (unbalanced-force "
-              "ratio %.2e): FS < 1, or not settled" % r0, flush=True)
+              "ratio %.2e): FS < 1, or not settled (strengths changed since settle, e.g. set_joint_strength: settle "
+              "again)" % r0, flush=True)
     trials = []
     kw = dict(ids=ids, tol=tol, d_fail=d_fail, max_steps=max_steps, check=check, damping=damping,
               reduce_tensile=reduce_tensile, verbose=verbose, mass_fraction=mass_fraction)

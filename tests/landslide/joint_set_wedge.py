@@ -62,7 +62,9 @@ if when == "errors":
                      (([plane],), dict(cohesion=c, friction_angle=0.0)),  # no default tensile strength
                      (([[(xd, yd)]],), strength),  # a polyline of one point
                      (([],), strength),
-                     ((plane,), strength)]:  # one polyline, not a list of them
+                     ((plane,), strength),  # one polyline, not a list of them
+                     (([plane],), dict(strength, ductile="no")),  # (was taken as True)
+                     (([plane],), dict(strength, tol=-1.0))]:
         try:
             sl.set_joint_strength(*args, **kw)
             print("NO ERROR", kw)
@@ -77,6 +79,12 @@ if when == "errors":
         print("NO SRERROR")
     except ValueError as e:
         print("SRERROR", e)
+    for F in (-2.0, 0.0, float("nan")):  # (F = -2 wrote negative strengths to 33 joints, 0 divided by zero)
+        try:
+            sl.apply_joint_sets(F)
+            print("NO APPLYERROR", F)
+        except ValueError as e:
+            print("APPLYERROR", e)
     import os
     import tempfile
     saved = os.path.join(tempfile.mkdtemp(), "scene.xml.bz2")
@@ -91,6 +99,14 @@ if when == "errors":
         print("NO ERROR refPos moved")
     except ValueError as e:
         print("ERROR", e)
+    newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
+    newton.gravity = (0, 0, 0)  # no weight: settle "converged" at once, strength reduction found "no mechanism"
+    for f in (lambda: sl.settle(), lambda: strength_reduction(verbose=False)):
+        try:
+            f()
+            print("NO GERROR")
+        except ValueError as e:
+            print("GERROR", e)
     sys.exit(0)
 n_set = sl.set_joint_strength([plane], **strength, **springs) if when in ("before", "stiff") else 0
 sl.settle(tol=1e-4, max_steps=60000, check=200, density_scaling=True)

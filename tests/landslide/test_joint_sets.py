@@ -79,11 +79,18 @@ def test_bad_joint_sets_are_refused_with_what_is_wrong():
                  timeout=120)
     assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
     errors = [l for l in p.stdout.splitlines() if l.startswith(("ERROR", "NO ERROR"))]
-    assert len(errors) == 8 and all(e.startswith("ERROR set_joint_strength: ") for e in errors), errors
+    assert len(errors) == 10 and all(e.startswith("ERROR set_joint_strength: ") for e in errors[:9]), errors
     for e, what in zip(errors, ["no joint lies on polylines[0]", "cohesion must be in [0", "friction_angle must be in [0",
                                 "give tensile_strength", "polylines[0]", "no polylines given", "give [polyline]",
-                                "refPos and refOri"]):
+                                "ductile must be True, False or None", "tol must be in (0"]):
         assert what in e, (what, e)
+    # refPos moved 1 cm since build_scene: the plane's joints are still found, by the blocks bond_and_break
+    # found on the cut (the search by geometry alone refused it, naming refPos)
+    assert errors[9] == "NO ERROR refPos moved", errors
+    applied = [l for l in p.stdout.splitlines() if "APPLYERROR" in l]
+    assert len(applied) == 3 and all(l.startswith("APPLYERROR apply_joint_sets: F must be") for l in applied), applied
+    gravity = [l for l in p.stdout.splitlines() if "GERROR" in l]
+    assert len(gravity) == 2 and all(l.startswith("GERROR") and "gravity is zero" in l for l in gravity), gravity
     assert "SETS 1 1" in p.stdout, p.stdout[-2000:]  # the set is kept with the scene (O.save, O.load)
     sr = [l for l in p.stdout.splitlines() if "SRERROR" in l]
     assert len(sr) == 1 and sr[0].startswith("SRERROR strength_reduction: with a calibration"), sr
@@ -142,3 +149,15 @@ def test_a_joint_set_softer_after_settling_and_stiffer_refused():
     assert r["overlap"] == pytest.approx(r["closed"], rel=0.01), r
     r = layer("1e11", "after")  # its force would jump 83 x: the layer bounced for 200 000 steps
     assert "normal_stiffness" in r["error"] and "before settling" in r["error"], r
+
+
+def test_a_crack_joint_moved_past_the_cracks_end_is_still_found():
+    """joint_set_plane.py: a new user's planar slide, bricks, the sets given after settling. The wedge settles
+    1.2 cm down its bedding, and the crack joint at the bedding's end then reaches past the crack polyline's
+    end: it was not found, kept the rock's 5 MPa and glued the heel (FS 2.0115 against Hoek & Bray's 1.4818).
+    bond_and_break keeps the joints of the builder's cuts, and joints_on finds them again by their blocks."""
+    p = run_yade(os.path.join(HERE, "joint_set_plane.py"), cwd=HERE, timeout=240)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    r = json.loads([l for l in p.stdout.splitlines() if l.startswith("RESULT ")][0][7:])
+    assert r["missed"] == [] and r["bonded"] > 10, r
+    assert r["fs"] == pytest.approx(r["closed"], rel=0.01), r
