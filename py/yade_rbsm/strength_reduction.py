@@ -340,7 +340,13 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
                 raise RuntimeError("strength_reduction: trial F = %.4g is outside the calibration (%s); bracket so far: "
                                    "stable %s, failed %s; trials: %s" % (F, e, lo, hi, "; ".join(str(t) for t in trials))) \
                     from None
-        t = trial(F, ref, mark, png=("%s_F%.4f.png" % (png, F)) if png else None, **kw)
+        try:
+            t = trial(F, ref, mark, png=("%s_F%.4f.png" % (png, F)) if png else None, **kw)
+        except RuntimeError as e:  # a report of the plugin stopped the run (a sliver spinning off, say)
+            raise RuntimeError("strength_reduction: trial F = %.4g was stopped at step %d: %s. A block the model "
+                               "cannot follow (named on stderr: a sliver? the builders' min_area) ends the strength "
+                               "reduction; the trials before it: %s" % (F, O.iter, e, "; ".join(str(t) for t in trials)
+                                                                        or "none")) from None
         pngs[F] = t.png
         return t
     try:

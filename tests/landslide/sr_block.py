@@ -1,6 +1,7 @@
 # yade script (run by test_strength_reduction.py): a 2 m x 1 m block on a fixed block along a plane
 # joint inclined at psi (argv[1], deg), phi = 30 deg, c = 0; damped gravity stage, then the factor of
-# safety by strength reduction; prints it with the closed form tan(phi)/tan(psi).
+# safety by strength reduction; prints it with the closed form tan(phi)/tan(psi). argv[2] "stop": a trial
+# stopped by a report of the plugin (prints SRSTOP and the message).
 import math, os, sys
 from yade import O, wrapper, Vector3
 import yade_rbsm as yr
@@ -15,6 +16,14 @@ O.bodies.append([yr.polygon2d([rot(-1, -1), rot(3, -1), rot(3, 0), rot(-1, 0)], 
                  yr.polygon2d([rot(0, 0), rot(2, 0), rot(2, 1), rot(0, 1)], mat)])
 ok, n, r = bonded_gravity_stage()
 pos0 = Vector3(O.bodies[1].state.pos)
+if sys.argv[2:] == ["stop"]:  # a report of the plugin in a trial (here: any motion beyond 1e-4 of the inradius)
+    yr.time_stepper().maxStepMotion = 1e-4
+    try:
+        strength_reduction(start=1.0, grow=1.5, rtol=0.005, tol=1e-4, d_fail=2e-3, max_steps=1500, check=100,
+                           damping=0.7, verbose=False)
+    except RuntimeError as e:
+        print("SRSTOP %s" % e)
+    sys.exit(0)
 res = strength_reduction(start=1.0, grow=1.5, rtol=0.005, tol=1e-4, d_fail=2e-3, max_steps=1500, check=100,
                          damping=0.7, verbose=True)
 print(res)

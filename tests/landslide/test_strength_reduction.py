@@ -65,3 +65,15 @@ def test_a_bracket_set_by_max_steps_is_warned_about():
     assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
     warnings = [l for l in p.stdout.splitlines() if l.startswith("WARNING")]
     assert len(warnings) == 1 and "did not converge within max_steps = 8000" in warnings[0], p.stdout[-2000:]
+
+
+def test_a_trial_stopped_by_the_plugin_says_which_and_what_came_before():
+    """A new user's two-wedge slope (trial 14a) lost its whole strength reduction to a 5 mm sliver spinning off
+    in one trial, with only "the run was stopped at step N by an error of the plugin". The error now names the
+    trial's F, the step, what to look for, and the trials before it."""
+    p = run_yade(os.path.join(HERE, "sr_block.py"), "25", "stop", cwd=HERE, timeout=120)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    line = [l for l in p.stdout.splitlines() if l.startswith("SRSTOP ")][0]
+    assert "strength_reduction: trial F = 1.5 was stopped at step" in line and "min_area" in line, line
+    assert "F = 1.0000: stable" in line, line  # the trials before it
+    assert "yade-rbsm: ERROR: RbsmTimeStepper: body #1" in p.stderr, p.stderr[-2000:]
