@@ -13,7 +13,9 @@ public:
 		"Material of Rigid-Bodies-Spring Model blocks (Kawai 1977): elastic constants of the blocks, which set the "
 		"stiffness of the joint springs (see :yref:`Ip2_RbsmMat_RbsmMat_RbsmPhys`), and the Mohr-Coulomb strength of "
 		"the joints: f = τ² − (c + σn·tanφ)² with σn > 0 in compression (the seed paper's eq. 11 with its tension-positive σ). "
-		"Units SI: Pa, kg/m³, radians.",
+		"Units SI: Pa, kg/m³, radians. As for YADE's materials, a value changed mid-run acts where it is read: a joint "
+		"takes its springs and strength when it is made (change RbsmPhys of the existing ones), a block its mass when "
+		"it is built (change State.mass).",
 		((Real, young, 1e9, Attr::triggerPostLoad, "Young's modulus E of the blocks [Pa]."))
 		((Real, poisson, 0.2, Attr::triggerPostLoad, "Poisson's ratio ν of the blocks [-]; in (−1, 0.5)."))
 		((bool, planeStrain, true, Attr::triggerPostLoad,

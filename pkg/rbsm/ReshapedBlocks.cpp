@@ -20,14 +20,11 @@ namespace {
 	}
 }
 
-bool followReshape(Body& b, const BodyContainer& bodies)
+bool followReshapeChange(Body& b, const BodyContainer& bodies)
 {
-	if (!b.shape || !b.state || b.shape->getClassIndex() != Polygon2D::getClassIndexStatic()) return false;
 	Polygon2D& p = static_cast<Polygon2D&>(*b.shape);
 	State&     s = *b.state;
-	if (p.revision == p.followed.revision) {
-		if (s.mass == p.followed.mass && s.inertia.z() == p.followed.inertia) return false; // the usual block
-		// mass or inertia set by a script
+	if (p.revision == p.followed.revision) { // mass or inertia set by a script
 		updateReducedMasses(b, bodies);
 		p.followed.mass = s.mass, p.followed.inertia = s.inertia.z();
 		return true;

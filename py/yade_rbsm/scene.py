@@ -129,7 +129,10 @@ def advance(n):
     ``O.wait()``), so a helper that checks the scene every few steps spent most of its time asleep
     (docs/benchmarks.md, "Idle waits"). Raises RuntimeError when a step is stopped by a report of the
     plugin (a block moving too far in one step, a pair of bodies it cannot handle: the message is on
-    stderr), where ``O.run`` would have returned early and the caller gone on."""
+    stderr), where ``O.run`` would have returned early and the caller gone on. Unlike ``O.run`` it does not
+    stop for ``O.pause()`` or ``O.stopAtTime``, and a PyRunner that sets ``O.stopAtIter`` to the next step is
+    taken as such a report (the plugin stops a run that way): helpers that run through it (``settle``,
+    ``strength_reduction``) check their own conditions between chunks instead."""
     from yade import O
 
     if isinstance(n, bool) or not float(n).is_integer():
