@@ -154,8 +154,13 @@ def _record_cuts(polylines):
     segs = _segments(polylines)
     if not segs:
         return
+    from . import mpi
     rec = [[I.id1, I.id2, p0[0], p0[1], p1[0], p1[1]] for I, p0, p1 in _reference_segments(segs, _tolerance(segs, None))]
-    O.tags[_CUTS_TAG] = json.dumps(_recorded_cuts() + rec)
+    if mpi.is_split():  # each rank sees its own joints: every rank keeps all (migration, to_serial's merge)
+        rec = [r for part in mpi.distributed().comm.allgather(rec) for r in part]
+    # one entry per pair of blocks, the latest (bond_and_break called again appended them all once more)
+    kept = {(r[0], r[1]): r for r in _recorded_cuts() + rec}
+    O.tags[_CUTS_TAG] = json.dumps(list(kept.values()))
 
 
 def break_joints(polylines, tol=None, counted=None):
