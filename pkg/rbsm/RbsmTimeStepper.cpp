@@ -111,6 +111,25 @@ void RbsmTimeStepper::postLoad(RbsmTimeStepper&)
 		}
 }
 
+// The uninterrupted run makes a full estimate at its next step after a joint's kn, ks or a block's mass,
+// inertia or shape were set from Python (action()); neither RbsmPhys::edits nor Polygon2D::followed is
+// saved, so the file says it (a kn x 100 set before O.save ran at the old step after O.load and tore the
+// bond). The live engine keeps its lastCheck; only the file changes.
+void RbsmTimeStepper::preSave(RbsmTimeStepper&)
+{
+	savedLastCheck = lastCheck;
+	bool pending   = jointEdits() != editsSeen;
+	if (!pending && scene)
+		for (const auto& b : scene->bodies->body)
+			if (b && reshapePending(*b)) {
+				pending = true;
+				break;
+			}
+	if (pending) lastCheck = -1;
+}
+
+void RbsmTimeStepper::postSave(RbsmTimeStepper&) { lastCheck = savedLastCheck; }
+
 // The joint as the kernel's stiffness sees it: the segment it reaches once a closing corner lies flat
 // (rbsm::closingContact), at the rule's points.
 bool RbsmTimeStepper::jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const

@@ -14,6 +14,10 @@ public:
 	void action() override;
 	//! Checks the attributes when they are set (raises ValueError in Python, before any step).
 	void postLoad(RbsmTimeStepper&);
+	//! A full estimate that the next step would make (a joint's kn, ks or a block's mass, inertia or
+	//! shape set since the last step) is saved as lastCheck = -1: the loaded scene cannot see these edits.
+	void preSave(RbsmTimeStepper&);
+	void postSave(RbsmTimeStepper&);
 	//! Switches off a VTKRecorder whose recorders would crash YADE on RBSM joints (see VtkRecorderGuard).
 	VtkRecorderGuard vtkRecorderGuard;
 	//! Critical time step of the present joints [s] (+inf if no RBSM joint exists yet).
@@ -124,6 +128,7 @@ private:
 	std::vector<Real>             inradius; // per body id, from the last full estimate
 	std::vector<Real>             firstOmega2; // firstContactEstimate's ω² of each free block without joints (for scaleMasses)
 	long                          jointsSeen = -1;
+	long                          savedLastCheck = -1; // lastCheck around a save (preSave, postSave)
 	long                          editsSeen  = -1; // RbsmPhys::edits at the last step (a joint's kn, ks set from Python since: a full estimate)
 	static long                   jointEdits();
 	struct BoundPose {

@@ -24,7 +24,9 @@ bool followReshapeChange(Body& b, const BodyContainer& bodies)
 {
 	Polygon2D& p = static_cast<Polygon2D&>(*b.shape);
 	State&     s = *b.state;
-	if (p.revision == p.followed.revision) { // mass or inertia set by a script
+	if (p.followed.revision < 0) // first seen (new, or after O.load): the joints' reduced masses of these masses
+		updateReducedMasses(b, bodies); // (a mass set by a script before O.save; the same values otherwise)
+	else if (p.revision == p.followed.revision) { // mass or inertia set by a script
 		updateReducedMasses(b, bodies);
 		p.followed.mass = s.mass, p.followed.inertia = s.inertia.z();
 		return true;
@@ -38,6 +40,14 @@ bool followReshapeChange(Body& b, const BodyContainer& bodies)
 	}
 	p.followed = Polygon2D::Followed { p.revision, volume, polar, s.mass, s.inertia.z() };
 	return rescale;
+}
+
+bool reshapePending(const Body& b)
+{
+	if (!b.shape || !b.state || b.shape->getClassIndex() != Polygon2D::getClassIndexStatic()) return false;
+	const Polygon2D& p = static_cast<const Polygon2D&>(*b.shape);
+	return p.followed.revision >= 0
+	        && (p.revision != p.followed.revision || b.state->mass != p.followed.mass || b.state->inertia.z() != p.followed.inertia);
 }
 
 } // namespace yade

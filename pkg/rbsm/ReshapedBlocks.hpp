@@ -16,9 +16,10 @@ bool followReshapeChange(Body& b, const BodyContainer& bodies);
  * its density. Returns true then, and also when b's mass or polar inertia was set since (by a
  * script: a lighter block needs a shorter step at once; its joints' reduced masses follow). Its
  * joints are made anew by Ig2 from the new shape (RbsmGeom remembers the Polygon2D.revision it was
- * made for). A shape met for the first time (new, or after O.load) is taken as it is; what was seen is
- * kept in the shape (not saved), so a body id that YADE reuses for another block starts afresh. Called
- * by RbsmTimeStepper for every body at every step. */
+ * made for). A shape met for the first time (new, or after O.load) is taken as it is (its joints'
+ * reduced masses recomputed from its mass: the same values, unless a script set the mass before O.save);
+ * what was seen is kept in the shape (not saved), so a body id that YADE reuses for another block starts
+ * afresh. Called by RbsmTimeStepper for every body at every step. */
 inline bool followReshape(Body& b, const BodyContainer& bodies)
 {
 	if (!b.shape || !b.state || b.shape->getClassIndex() != Polygon2D::getClassIndexStatic()) return false;
@@ -27,5 +28,10 @@ inline bool followReshape(Body& b, const BodyContainer& bodies)
 		return false; // the usual block
 	return followReshapeChange(b, bodies);
 }
+
+/// True when followReshape would act on b at the next step (a shape, mass or inertia changed since it
+/// last saw b): RbsmTimeStepper saves a pending full estimate then (the record of what was seen is not
+/// saved, so a loaded scene could not tell).
+bool reshapePending(const Body& b);
 
 } // namespace yade

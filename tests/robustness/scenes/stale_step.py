@@ -13,6 +13,7 @@ from _common import params, emit, all_finite  # noqa: E402
 from yade_rbsm import polygon2d, engines, advance, omega  # noqa: E402
 
 change = params()["change"]
+save = params().get("save", False)  # O.save and O.load right after the change (before the next step)
 m = RbsmMat(young=1e9, poisson=0.2, density=2000, frictionAngle=0.6, cohesion=1e6, tensileStrength=1e6)
 O.materials.append(m)
 a = O.bodies.append(polygon2d([(0, 0), (1, 0), (1, 1), (0, 1)], m))
@@ -41,10 +42,14 @@ elif change == "kn":
     I = O.interactions[a, b]
     I.phys.kn *= 100
     I.phys.ks *= 100
+if save:
+    O.save("/tmp/stale_step_%d.yade.gz" % os.getpid())
+    O.load("/tmp/stale_step_%d.yade.gz" % os.getpid())
+    os.remove("/tmp/stale_step_%d.yade.gz" % os.getpid())
 peak = 0.0
 for k in range(60):
     advance(1)
     peak = max(peak, kinetic())
-out.update(peak=peak, dt_after=O.dt, intact=O.interactions[a, b].phys.nIntact if O.interactions.has(a, b) else 0,
+out.update(x=O.bodies[b].state.pos[0], peak=peak, dt_after=O.dt, intact=O.interactions[a, b].phys.nIntact if O.interactions.has(a, b) else 0,
            finite=all_finite(O))
 emit(out)
