@@ -185,11 +185,11 @@ bool RbsmTimeStepper::mayImpact(const RbsmPhys& p) const { return impactsMatter(
 // Joint dashpots (Law2's dampingRatio) lower the limit of the central-difference scheme, whose
 // velocity is half a step behind: dt ≤ (2/ω)(√(1+ξ²) − ξ) = 2/(√(ω²+γ²) + γ) for a mode of frequency
 // ω and decay rate γ = ξω (m ẍ + C ẋ + K x: γ = C/2m), which falls as ω or γ grows. So the Gershgorin
-// bounds of both, ω̂_b² of M^-½ K M^-½ and λ̂_b of M^-½ C M^-½ (C the dashpots, c times the joint's
-// present area at each point, as the law applies them), γ̂_b = λ̂_b/2, give each block's step. This
-// is an estimate, not a bound (the modes of K and C differ). A corner's dashpot is stiff per area
-// but acts on almost no area: counted on the length its springs reach once flat (ξ_b = c/k ω̂/2) it
-// took the step of a corner landing 100 times down (tests/robustness/test_timestep.py).
+// bounds of both, ω̂_b² of M^-½ K M^-½ and λ̂_b of M^-½ C M^-½ (C the dashpots at their largest until
+// the next estimate, jointDashpots), γ̂_b = λ̂_b/2, give each block's step. This is an estimate, not a
+// bound (the modes of K and C differ). A corner's dashpot is stiff per area but acts on almost no
+// area: that c on the length its springs reach once flat (ξ_b = c/k ω̂/2) took the step of a corner
+// landing 100 times down (tests/robustness/test_timestep.py).
 Real RbsmTimeStepper::blockDt(size_t id) const
 {
 	const Real w2 = rowBounds[kRow * id], gamma = rowBounds[kRow * id + 1] / 2;
@@ -198,21 +198,23 @@ Real RbsmTimeStepper::blockDt(size_t id) const
 	return 2 / (std::hypot(std::sqrt(w2), gamma) + gamma);
 }
 
-// The joint's dashpots as the kernel's stiffness sees springs (kn = ks = c per area) at the rule's
-// points on the present segment, with the areas the law gives them; false without dashpots.
-bool RbsmTimeStepper::jointDashpots(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const
+// The joint's dashpots as the kernel's stiffness sees springs (kn = ks per area), on the springs' points
+// and areas (*springs*: jointAsDynContact's, the length a closing corner reaches once flat): the law's
+// c = 2ξ√(kn A m)/A on the present area A acts as 2ξ√(kn A m) in all, which grows as √A while the corner
+// closes between two estimates; c √(A/A_flat) on A_flat is its value once flat, the largest on the way.
+// False without dashpots.
+bool RbsmTimeStepper::jointDashpots(const Interaction& I, const rbsm::DynContact& springs, rbsm::DynContact& c) const
 {
 	const RbsmGeom* g;
 	const RbsmPhys* p;
-	if (!rbsmJoint(I, g, p) || !g->rule || !(p->dampingCoefficient > 0)) return false;
-	c.body1 = body1, c.body2 = body2;
-	c.normal = g->normal, c.tangent = g->tangent();
-	c.kn = c.ks = p->dampingCoefficient;
-	c.points.clear(), c.areas.clear();
-	for (int k = 0; k < g->nPoints(); k++) {
-		c.points.push_back(g->p0 + g->rule->s[k] * (g->p1 - g->p0));
-		c.areas.push_back(g->rule->w[k] * g->length * g->thickness);
-	}
+	if (!rbsmJoint(I, g, p) || !(p->dampingCoefficient > 0)) return false;
+	Real flat = 0;
+	for (Real a : springs.areas) flat += a;
+	const Real now = g->length * g->thickness;
+	if (!(flat > 0)) return false;
+	c       = springs;
+	c.kn    = p->dampingCoefficient * std::sqrt(std::min(Real(1), now / flat));
+	c.ks    = c.kn;
 	return true;
 }
 
@@ -268,7 +270,7 @@ Real RbsmTimeStepper::estimate()
 		if (!jointAsDynContact(*I, ends[0], ends[1], c)) continue;
 		nContacts++;
 		if (dashpots.size() <= nDashpots) dashpots.emplace_back();
-		if (jointDashpots(*I, ends[0], ends[1], dashpots[nDashpots])) nDashpots++;
+		if (jointDashpots(*I, c, dashpots[nDashpots])) nDashpots++;
 	}
 	dynContacts.resize(nContacts);
 	dashpots.resize(nDashpots);
@@ -306,7 +308,7 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 		if (!jointAsDynContact(*I, 0, 1, c)) continue;
 		Real add[2], diag[2], addC[2] = { 0, 0 };
 		rbsm::contactRowBounds(pair, c, add[0], add[1], &diag[0], &diag[1]);
-		if (jointDashpots(*I, 0, 1, d)) rbsm::contactRowBounds(pair, d, addC[0], addC[1]);
+		if (jointDashpots(*I, c, d)) rbsm::contactRowBounds(pair, d, addC[0], addC[1]);
 		for (int side = 0; side < 2; side++) {
 			const Body::id_t id = side == 0 ? id1 : id2;
 			rowBounds[kRow * id] += add[side];

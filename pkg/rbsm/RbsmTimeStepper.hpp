@@ -33,7 +33,7 @@ public:
 		"M^-½ K M^-½. A joint whose incident block touches by a corner that is closing by rotation counts with the length "
 		"it reaches once flat (the shorter of its two edges), not its present one. With joint dashpots (Law2's "
 		"dampingRatio) each block's limit is 2/(√(ω̂²+γ̂²) + γ̂) = (2/ω̂)(√(1+ξ²) − ξ), γ̂ half the Gershgorin bound of "
-		"M^-½ C M^-½ for the dashpots on the joints' present areas (ξ = γ̂/ω̂). A full "
+		"M^-½ C M^-½ for the dashpots as they will be once a closing corner lies flat (ξ = γ̂/ω̂). A full "
 		"estimate runs every :yref:`interval<RbsmTimeStepper.interval>` steps; a joint made in between raises the bounds of "
 		"its two blocks at the step it is made (the Gershgorin terms add up), before anything moves;\n"
 		"* the first contacts (:yref:`firstContactDt<RbsmTimeStepper.firstContactDt>`): the stiffest single joint each free "
@@ -112,7 +112,7 @@ private:
 	template <class Keep> const std::vector<const Interaction*>& jointsByIds(Keep keep);
 	Real firstContactEstimate(); // (also fills firstOmega2)
 	bool jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
-	bool jointDashpots(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
+	bool jointDashpots(const Interaction& I, const rbsm::DynContact& springs, rbsm::DynContact& c) const;
 	bool mayImpact(const RbsmPhys& p) const;
 	bool impactsMatter() const;
 	Real firstContactSafety() const;

@@ -322,7 +322,7 @@ def bond_and_break(sb):
     else:
         O.step()
     counted = mpi.counted_here
-    _record_cuts(list(sb.joints) + list(sb.cracks))
+    _record_cuts(list(sb.joints) + list(sb.cracks) + [t for t, _ in sb.layers if t is not None])  # (the layers' tops cut too)
     nj = sum(1 for I in O.interactions if I.isReal and counted(I))
     nb = break_crack(sb, counted=counted) + break_joints(sb.cracks, counted=counted)
     if mpi.is_split():
