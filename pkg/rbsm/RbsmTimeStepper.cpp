@@ -1,3 +1,4 @@
+#include <core/Omega.hpp>
 #include <pkg/rbsm/BlockStateCheck.hpp>
 #include <pkg/rbsm/Ip2_RbsmMat_RbsmMat_RbsmPhys.hpp>
 #include <pkg/rbsm/MemoryOrder.hpp>
@@ -119,8 +120,11 @@ void RbsmTimeStepper::preSave(RbsmTimeStepper&)
 {
 	savedLastCheck = lastCheck;
 	bool pending   = jointEdits() != editsSeen;
-	if (!pending && scene)
-		for (const auto& b : scene->bodies->body)
+	// the scene being saved is Omega's: this engine's own pointer is set at its scene's first step, and
+	// an engine just loaded (O.loadTmp, then O.saveTmp before a step) still points to the scene it replaced
+	const Scene* saved = Omega::instance().getScene().get();
+	if (!pending && saved)
+		for (const auto& b : saved->bodies->body)
 			if (b && reshapePending(*b)) {
 				pending = true;
 				break;

@@ -13,10 +13,14 @@ import pytest
 from conftest import HERE, run_yade
 
 
-def result(*args):
-    p = run_yade(os.path.join(HERE, "joint_set_wedge.py"), *args, cwd=HERE, timeout=240)
+def result_of(script, *args):
+    p = run_yade(os.path.join(HERE, script), *args, cwd=HERE, timeout=240)
     assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
     return json.loads([l for l in p.stdout.splitlines() if l.startswith("RESULT ")][0][7:])
+
+
+def result(*args):
+    return result_of("joint_set_wedge.py", *args)
 
 
 @pytest.mark.parametrize("pattern", ["voronoi", "bricks"])
@@ -122,9 +126,7 @@ def test_a_step_path_over_two_joint_sets_gives_the_rigid_block_limit_equilibrium
 
 
 def layer(*args):
-    p = run_yade(os.path.join(HERE, "joint_set_layer.py"), *args, cwd=HERE, timeout=240)
-    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
-    return json.loads([l for l in p.stdout.splitlines() if l.startswith("RESULT ")][0][7:])
+    return result_of("joint_set_layer.py", *args)
 
 
 @pytest.mark.parametrize("kn", ["1e7", "1e10"])
@@ -156,8 +158,6 @@ def test_a_crack_joint_moved_past_the_cracks_end_is_still_found():
     1.2 cm down its bedding, and the crack joint at the bedding's end then reaches past the crack polyline's
     end: it was not found, kept the rock's 5 MPa and glued the heel (FS 2.0115 against Hoek & Bray's 1.4818).
     bond_and_break keeps the joints of the builder's cuts, and joints_on finds them again by their blocks."""
-    p = run_yade(os.path.join(HERE, "joint_set_plane.py"), cwd=HERE, timeout=240)
-    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
-    r = json.loads([l for l in p.stdout.splitlines() if l.startswith("RESULT ")][0][7:])
+    r = result_of("joint_set_plane.py")
     assert r["missed"] == [] and r["bonded"] > 10, r
     assert r["fs"] == pytest.approx(r["closed"], rel=0.01), r
