@@ -92,8 +92,6 @@ public:
 	std::vector<Real>   pyShearTraction() const;
 	void                pySetShearTraction(const std::vector<Real>& tau);
 	std::vector<Real>   pyNormalTraction() const;
-	// Saving: the points go through the hidden attributes shearTraction ... open (the names and
-	// types of the per-point attributes of earlier versions), filled only around a save or load.
 	//! Counts the joints whose kn, ks were set from Python (assignment; also updateAttrs and a
 	//! constructor, which may set them; not O.load): RbsmTimeStepper makes a full estimate at its
 	//! next step when it changed (a stiffer joint). Strengths do not count: they leave the step alone,
@@ -104,6 +102,8 @@ public:
 	//! Python's setter of a strength: checked, nothing else (no postLoad, no edit counted).
 	template <Real RbsmPhys::*Member> static void setStrength(RbsmPhys& p, Real v);
 	template <Real RbsmPhys::*Member> static Real getValue(const RbsmPhys& p) { return p.*Member; }
+	// Saving: the points go through the hidden attributes shearTraction ... open (the names and
+	// types of the per-point attributes of earlier versions), filled only around a save or load.
 	void preSave(RbsmPhys&);
 	void postSave(RbsmPhys&);
 	void postLoad(RbsmPhys&);

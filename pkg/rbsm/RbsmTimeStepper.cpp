@@ -602,11 +602,11 @@ Real RbsmTimeStepper::limit()
 	return stableDt();
 }
 
+long RbsmTimeStepper::jointEdits() { return RbsmPhys::edits.load(std::memory_order_relaxed); }
+
 // A refused step: thrown, or under yade.mpy (deferErrors) kept for the sync engine that follows, which
 // stops every rank before NewtonIntegrator (a throw here would stop this rank alone and leave the others
 // waiting for it in their next exchange).
-long RbsmTimeStepper::jointEdits() { return RbsmPhys::edits.load(std::memory_order_relaxed); }
-
 void RbsmTimeStepper::refuse(const std::string& message)
 {
 	if (!deferErrors) throw std::runtime_error(message);
@@ -625,10 +625,10 @@ void RbsmTimeStepper::action()
 	// (first: also in a step that a bad block below ends early, since the recorder would still run)
 	vtkRecorderGuard.check(*scene);
 	// Per-body pass (issue 15), every step, on this thread: a reshaped block gets the mass of its new
-	// shape, and a mass or inertia set by a script is seen (ReshapedBlocks.hpp); a block whose state the model cannot integrate is reported by id
-	// and the run stops after this step (BlockStateCheck.hpp), without the estimate below, which
-	// would throw without naming the body. It runs before the estimate and checkMotion (which read
-	// the masses and inner radii), so it is a pass of its own.
+	// shape, and a mass or inertia set by a script is seen (ReshapedBlocks.hpp); a block whose state
+	// the model cannot integrate is reported by id and the run stops after this step
+	// (BlockStateCheck.hpp), without the estimate below, which would throw without naming the body. It
+	// runs before the estimate and checkMotion (which read the masses and inner radii): a pass of its own.
 	{
 		bool reshaped = false, bad = false;
 		for (const auto& b : scene->bodies->body) {

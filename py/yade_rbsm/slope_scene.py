@@ -298,8 +298,8 @@ def _loaded_and_stiffer(ph, name, v):
 def apply_joint_sets(F=1.0, reduce_tensile=False, sets=None):
     """Give the contacts on the joint sets (*sets*, default :func:`joint_sets`) the set's friction,
     divided by *F* (strength reduction's trial factor), and its cohesion and tensile strength (divided
-    too, the tensile strength only if *reduce_tensile*), and its stiffness if it has one: contacts a block makes along a set as it slides
-    take their blocks' materials when they form. strength_reduction calls it between the chunks of
+    too, the tensile strength only if *reduce_tensile*), and its springs if it has them: contacts a block
+    makes along a set as it slides take their blocks' materials when they form. strength_reduction calls it between the chunks of
     every trial; a dynamic run may call it from a PyRunner. Sets given later win where they overlap.
     Returns the number of contacts changed."""
     from .checks import number
