@@ -46,8 +46,7 @@ bool reshapePending(const Body& b)
 {
 	if (!b.shape || !b.state || b.shape->getClassIndex() != Polygon2D::getClassIndexStatic()) return false;
 	const Polygon2D& p = static_cast<const Polygon2D&>(*b.shape);
-	return p.followed.revision >= 0
-	        && (p.revision != p.followed.revision || b.state->mass != p.followed.mass || b.state->inertia.z() != p.followed.inertia);
+	return p.followed.revision >= 0 && !asFollowed(p, *b.state);
 }
 
 } // namespace yade

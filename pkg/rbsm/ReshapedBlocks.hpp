@@ -11,6 +11,13 @@ namespace yade {
 /// followReshape's work once something changed (out of line: the per-step check stays inline).
 bool followReshapeChange(Body& b, const BodyContainer& bodies);
 
+/// b's shape, mass and polar inertia are what followReshape last saw of them (false for a shape it has
+/// not seen yet: its revision is not the followed -1).
+inline bool asFollowed(const Polygon2D& p, const State& s)
+{
+	return p.revision == p.followed.revision && s.mass == p.followed.mass && s.inertia.z() == p.followed.inertia;
+}
+
 /* If b's Polygon2D changed since this was last called for it, b's mass and polar inertia are
  * scaled by the ratios of thickness·area and thickness·polarMoment, new over old: the block keeps
  * its density. Returns true then, and also when b's mass or polar inertia was set since (by a
@@ -23,9 +30,7 @@ bool followReshapeChange(Body& b, const BodyContainer& bodies);
 inline bool followReshape(Body& b, const BodyContainer& bodies)
 {
 	if (!b.shape || !b.state || b.shape->getClassIndex() != Polygon2D::getClassIndexStatic()) return false;
-	const Polygon2D& p = static_cast<const Polygon2D&>(*b.shape);
-	if (p.revision == p.followed.revision && b.state->mass == p.followed.mass && b.state->inertia.z() == p.followed.inertia)
-		return false; // the usual block
+	if (asFollowed(static_cast<const Polygon2D&>(*b.shape), *b.state)) return false; // the usual block
 	return followReshapeChange(b, bodies);
 }
 

@@ -142,9 +142,14 @@ def _reference_segments(segs, tol):
             yield I, p0, p1
 
 
-def _recorded_cuts():
+def _tagged(tag):
+    """The JSON list kept with the scene under O.tags[*tag*] ([] if none)."""
     from yade import O
-    return json.loads(O.tags[_CUTS_TAG]) if _CUTS_TAG in O.tags.keys() else []
+    return json.loads(O.tags[tag]) if tag in O.tags.keys() else []
+
+
+def _recorded_cuts():
+    return _tagged(_CUTS_TAG)
 
 
 def _record_cuts(polylines):
@@ -261,8 +266,7 @@ def joint_sets():
     """The joint sets set_joint_strength gave the current scene (kept in O.tags, so saved with it):
     [{polylines, tol, cohesion, tan_phi, tensile_strength, ductile, kn, ks}], in the order they were given
     (kn, ks None: the blocks' springs)."""
-    from yade import O
-    return json.loads(O.tags[_SETS_TAG]) if _SETS_TAG in O.tags.keys() else []
+    return _tagged(_SETS_TAG)
 
 
 def _give(js, joints, F=1.0, reduce_tensile=False):

@@ -168,6 +168,12 @@ def _free_ids():
     return [b.id for b in omega.free_bodies(O)]
 
 
+def _turned(q0, q1):
+    """The angle [rad, 0..pi] a block turned by from orientation *q0* to *q1*."""
+    angle = abs((q0.conjugate() * q1).toAxisAngle()[1])
+    return min(angle, 2 * math.pi - angle)
+
+
 def _mechanism(ids, start_ori, d, d_fail):
     """How the blocks that moved most in a trial (displaced more than half the largest displacement)
     moved, block by block: each block's rotation θ times its circumradius R over its displacement d,
@@ -186,8 +192,7 @@ def _mechanism(ids, start_ori, d, d_fail):
         if d[i] < 0.5 * dmax:
             continue
         s = O.bodies[i].state
-        angle = abs((start_ori[i].conjugate() * s.ori).toAxisAngle()[1])
-        angle = min(angle, 2 * math.pi - angle)
+        angle = _turned(start_ori[i], s.ori)
         num += s.mass * angle * O.bodies[i].shape.circumradius / d[i]
         den += s.mass
     rocking = num / den if den > 0 else 0.0
@@ -420,8 +425,7 @@ def _check_rotation(ids, limit, mass_fraction, verbose):
     turned, total, mass = [], 0.0, 0.0
     for i in ids:
         s = O.bodies[i].state
-        angle = abs((s.refOri.conjugate() * s.ori).toAxisAngle()[1])
-        angle = min(angle, 2 * math.pi - angle)
+        angle = _turned(s.refOri, s.ori)
         total += s.mass
         if angle > limit:
             turned.append((angle, i))
