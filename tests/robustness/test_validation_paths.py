@@ -162,7 +162,3 @@ def test_change_then_save_continues_like_the_uninterrupted_run(change):
     assert saved["intact"] == plain["intact"] and saved["intact"] > 0, (plain, saved)
     assert (saved["x"], saved["peak"], saved["dt_after"]) == (plain["x"], plain["peak"], plain["dt_after"]), (plain, saved)
 
-
-def test_a_scene_loaded_then_saved_before_a_step():
-    r, _ = case("load_then_save")
-    assert r["steps"] == 10 and r["finite"], r

@@ -178,15 +178,6 @@ elif case == "python_args":
     it = O.iter
     out["calls"] = {k: attempt(f) for k, f in calls.items()}
     out["steps"] = O.iter - it
-elif case == "load_then_save":
-    # O.loadTmp then O.saveTmp before any step (strength reduction does): the loaded stepper's own scene
-    # pointer is set at its first step, and its preSave read the scene it replaced (a segfault)
-    O.saveTmp("a")
-    O.loadTmp("a")
-    O.bodies[1].state.mass *= 0.5  # an edit pending at the save
-    O.saveTmp("b")
-    O.loadTmp("b")
-    run(10)
 elif case == "phys_stiffened":
     # a running scene's joints made 1e4 times stiffer (a user's joint set, or a script): the step
     # must follow at once, as after RbsmTimeStepper.checkNextStep(), not at the next full estimate
