@@ -568,24 +568,13 @@ inline void RbsmTimeStepper::keepBoundAhead(const Body& b, const Polygon2D& poly
 	if (move > b.bound->sweepLength + 0.5e-6 * R) runCollider = true;
 }
 
-// Both per-body checks of every step in one pass: at 10⁵ blocks a pass streams every Body, State,
-// Shape and Bound from memory, about 3 ms of a 110 ms step.
-Real RbsmTimeStepper::watchBodies()
+// Both per-body checks of every step for one block (in action()'s pass over the bodies).
+inline void RbsmTimeStepper::watchBody(const Body& b, Real& travelDt, bool& runCollider)
 {
-	const auto& bodies = scene->bodies->body;
-	if (boundPose.size() < bodies.size()) boundPose.resize(bodies.size());
-	const bool watchMotion = maxStepMotion > 0;
-	Real       travelDt    = std::numeric_limits<Real>::infinity();
-	bool       runCollider = false;
-	for (const auto& b : bodies) {
-		if (!b) continue;
-		const Polygon2D* poly = polygonOf(*b);
-		if (!poly || !ownedHere(*b)) continue;
-		if (b->bound) keepBoundAhead(*b, *poly, runCollider);
-		if (watchMotion && !isFixed(*b->state)) checkMotion(*b, *poly, travelDt);
-	}
-	if (runCollider) scene->doSort = true;
-	return travelDt;
+	const Polygon2D* poly = polygonOf(b);
+	if (!poly || !ownedHere(b)) return;
+	if (b.bound) keepBoundAhead(b, *poly, runCollider);
+	if (maxStepMotion > 0 && !isFixed(*b.state)) checkMotion(b, *poly, travelDt);
 }
 
 Real RbsmTimeStepper::stableDt() const
@@ -624,21 +613,37 @@ void RbsmTimeStepper::action()
 	// in every step: the one serial place of an RBSM step that sees a VTKRecorder added to O.engines
 	// (first: also in a step that a bad block below ends early, since the recorder would still run)
 	vtkRecorderGuard.check(*scene);
-	// Per-body pass (issue 15), every step, on this thread: a reshaped block gets the mass of its new
-	// shape, and a mass or inertia set by a script is seen (ReshapedBlocks.hpp); a block whose state
-	// the model cannot integrate is reported by id and the run stops after this step
-	// (BlockStateCheck.hpp), without the estimate below, which would throw without naming the body. It
-	// runs before the estimate and checkMotion (which read the masses and inner radii): a pass of its own.
+	// One pass over the bodies at every step, on this thread (at 10⁵ blocks a pass streams every Body,
+	// State, Shape and Bound from memory: two passes cost 40 ns per contact-step, one 20 ns).
+	// - issue 15: a reshaped block gets the mass of its new shape, and a mass or inertia set by a
+	//   script is seen (ReshapedBlocks.hpp); a block whose state the model cannot integrate is reported
+	//   by id and the run stops after this step (BlockStateCheck.hpp), without the estimate below, which
+	//   would throw without naming the body.
+	// - watchBody: the collider trigger and the motion check, which read the velocities. Joints made
+	//   under density scaling slow their blocks (raiseMassScale): the watch then follows them. A
+	//   reshaped block is watched after the full estimate it causes (its inner radius changes).
+	const auto& bodies = scene->bodies->body;
+	if (boundPose.size() < bodies.size()) boundPose.resize(bodies.size());
+	const long made        = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
+	const bool watchLater  = densityScaling && made != jointsSeen;
+	Real       travelDt    = std::numeric_limits<Real>::infinity();
+	bool       runCollider = false;
 	{
 		bool reshaped = false, bad = false;
-		for (const auto& b : scene->bodies->body) {
+		reshapedIds.clear();
+		for (const auto& b : bodies) {
 			if (!b) continue;
-			reshaped |= followReshape(*b, *scene->bodies);
-			if (b->state && blockStateSurelyFine(*b->state)) continue; // the usual block, without a call
-			const std::string problem = blockStateProblem(*b);
-			if (problem.empty()) continue;
-			rbsm_report::stopForBody(blockStateReports, *scene, "RbsmTimeStepper", b->id, problem);
-			bad = true;
+			const bool changed = followReshape(*b, *scene->bodies);
+			if (!(b->state && blockStateSurelyFine(*b->state))) { // (the usual block, without a call)
+				const std::string problem = blockStateProblem(*b);
+				if (!problem.empty()) {
+					rbsm_report::stopForBody(blockStateReports, *scene, "RbsmTimeStepper", b->id, problem);
+					bad = true;
+					continue;
+				}
+			}
+			if (changed) reshaped = true, reshapedIds.push_back(b->id);
+			else if (!watchLater) watchBody(*b, travelDt, runCollider);
 		}
 		if (bad) return;
 		// a lighter block may need a shorter step now, its joints were made anew (their phys
@@ -647,7 +652,6 @@ void RbsmTimeStepper::action()
 		if (reshaped) lastCheck = -1;
 	}
 	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: estimate now)
-	const long made = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
 	if (densityScaling != massScaled) lastCheck = -1, massScaled = densityScaling; // switched: estimate now
 	if (densityScaling && targetDt != scaledTarget) lastCheck = -1;                 // a new target: estimate now
 	if (const long edits = jointEdits(); edits != editsSeen) lastCheck = -1, editsSeen = edits; // a joint's kn, ks set: estimate now
@@ -660,8 +664,14 @@ void RbsmTimeStepper::action()
 	// a joint made since: its rows (and scales) grow by bounds, at this step; without the rows of a
 	// full estimate (a scene saved by an older build), an estimate now
 	else if (made != jointsSeen) densityScaling && !scalesHold(scene->bodies->body.size()) ? fullCheck() : addJointsMadeThisStep();
-	jointsSeen          = made;
-	const Real travelDt = watchBodies();
+	jointsSeen = made;
+	if (watchLater)
+		for (const auto& b : bodies) {
+			if (b) watchBody(*b, travelDt, runCollider);
+		}
+	else
+		for (const Body::id_t id : reshapedIds) watchBody(*bodies[size_t(id)], travelDt, runCollider);
+	if (runCollider) scene->doSort = true;
 	if (densityScaling) applyMassScale();
 
 	const Real limit = stableDt();

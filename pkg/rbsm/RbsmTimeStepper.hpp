@@ -100,7 +100,7 @@ public:
 private:
 	void fullCheck();
 	void addJointsMadeThisStep();
-	Real watchBodies(); // one pass over the bodies: keepBoundAhead and checkMotion of each; returns the travel limit
+	inline void watchBody(const Body& b, Real& travelDt, bool& runCollider); // keepBoundAhead and checkMotion of one block
 	inline void checkMotion(const Body& b, const Polygon2D& poly, Real& travelDt); // (defined, and used, in the .cpp only)
 	void        reportMotion(const Body& b, Real motion, Real r); // (the rare path, out of the loop)
 	inline void keepBoundAhead(const Body& b, const Polygon2D& poly, bool& runCollider);
@@ -144,6 +144,7 @@ private:
 	Vector3r                        newtonGravity     = Vector3r::Zero(); // NewtonIntegrator.gravity, read once per full estimate (densityScaling)
 	bool                            newtonGravityRead = false;
 	std::vector<BoundPose> boundPose; // per body id: its rotation when the collider last made its box
+	std::vector<Body::id_t> reshapedIds; // this step's reshaped blocks, watched after the full estimate
 };
 REGISTER_SERIALIZABLE(RbsmTimeStepper);
 
