@@ -29,8 +29,7 @@ namespace rbsm_boundary {
 			auto geom = shared_ptr<RbsmGeom>(new RbsmGeom);
 			geom->setIntegrationPoints(nIP);
 			geom->thickness = block.thickness;
-			const bool fixed2 = (s2.blockedDOFs & State::DOF_ALL) == State::DOF_ALL || !(s2.mass > 0);
-			geom->reducedMass = fixed2 ? s1.mass : s1.mass * s2.mass / (s1.mass + s2.mass);
+			geom->reducedMass = RbsmGeom::reducedMassOf(s1, s2); // (the block-block joints' formula)
 			I->geom           = geom;
 			g                 = geom.get();
 		} else if (!c.touching) {
