@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 namespace yade {
@@ -591,6 +592,23 @@ Real RbsmTimeStepper::limit()
 	return stableDt();
 }
 
+// YADE's idiom for a step of one's own is O.dt = x, which stops YADE's time steppers: a step set
+// between two steps that this engine set is the script's from then on, and is checked, not replaced
+// (it was replaced silently: a user's smaller step for accuracy was lost at the next step).
+void RbsmTimeStepper::takeScriptDt()
+{
+	if (!setDt) {
+		dtSet = 0; // a later setDt = True starts afresh
+		return;
+	}
+	if (!(dtSet > 0) || scene->dt == dtSet) return;
+	setDt = false;
+	std::cerr << "yade-rbsm: note: RbsmTimeStepper: O.dt = " << scene->dt << " s was set from outside the time stepper before step " << scene->iter
+	          << " (it had set " << dtSet << " s): the step is the script's from now on, checked against the stable limit (setDt is now False; "
+	          << "RbsmTimeStepper.setDt = True lets the stepper choose it again)\n";
+	dtSet = 0;
+}
+
 long RbsmTimeStepper::jointEdits() { return RbsmPhys::edits.load(std::memory_order_relaxed); }
 
 // A refused step: thrown, or under yade.mpy (deferErrors) kept for the sync engine that follows, which
@@ -610,6 +628,7 @@ void RbsmTimeStepper::action()
 		throw std::runtime_error(message + " [deferErrors is set but no yade_rbsm.mpi sync engine follows RbsmTimeStepper: use yade_rbsm.engines(mpi=True)]");
 	}
 	stepDt = std::numeric_limits<Real>::infinity();
+	takeScriptDt();
 	// in every step: the one serial place of an RBSM step that sees a VTKRecorder added to O.engines
 	// (first: also in a step that a bad block below ends early, since the recorder would still run)
 	vtkRecorderGuard.check(*scene);
@@ -686,7 +705,7 @@ void RbsmTimeStepper::action()
 	// (thrown at km/s) is reported by checkMotion, not run in slow motion.
 	stepDt = std::min({ limit, maxDt, std::max(travelDt, limit / 10) });
 	if (setDt) {
-		if (std::isfinite(stepDt)) scene->dt = stepDt;
+		if (std::isfinite(stepDt)) scene->dt = dtSet = stepDt;
 		return;
 	}
 	if (!(scene->dt > 0)) {

@@ -64,7 +64,8 @@ public:
 			"Stability needs only safetyFactor, but an impact resolved in two or three steps stores up to (ω·dt)² of its energy in the overlap of its first step: "
 			"at 0.8 a flat block dropped 2 m rebounded to 3.5 m. Bonded joints and damped (quasi-static) stages keep safetyFactor; set it to safetyFactor for the old behaviour. "
 			"Accuracy, not stability: only the step the stepper sets (setDt) takes it; with setDt=False a larger O.dt is not refused for it, and yade_rbsm.critical_time_step() is the stability limit."))
-		((bool, setDt, false, , "Set O.dt to the stable step (True) or only check it and refuse a larger O.dt (False)."))
+		((bool, setDt, false, , "Set O.dt to the stable step (True) or only check it and refuse a larger O.dt (False). As YADE's time steppers stop at ``O.dt = x``, an O.dt set from a script (or another engine) between two steps that this engine set switches setDt off, with a note: the step is then the script's, checked against the stable limit. (YADE's ``O.dt = -1`` looks for a TimeStepper, which this GlobalEngine is not: set setDt = True instead.)"))
+		((Real, dtSet, 0, Attr::noSave, "The O.dt this engine set at its last step (0: none since setDt was last off); another O.dt at the next step was set from outside (see :yref:`setDt<RbsmTimeStepper.setDt>`). yade_rbsm.mpi's sync engine, which sets O.dt to the ranks' minimum, sets it too."))
 		((int, interval, 100, Attr::triggerPostLoad, "Full estimate every this many steps (the first step always has one); joints made in between are added at once. One full estimate costs about one InteractionLoop pass of the exact geometry (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
 		((Real, maxDt, std::numeric_limits<Real>::infinity(), Attr::triggerPostLoad, "Largest step that setDt sets [s] (> 0): a user's cap below the stable step."))
 		((Real, maxStepMotion, 0.5, Attr::triggerPostLoad, "Largest motion of a block in one step, (|v| + |ω| R)·dt, as a fraction of its inner radius (the distance from its centroid to its nearest edge line) before it is reported and the run stopped; 0 switches the check off."))
@@ -101,6 +102,7 @@ private:
 	void fullCheck();
 	void addJointsMadeThisStep();
 	inline void watchBody(const Body& b, Real& travelDt, bool& runCollider); // keepBoundAhead and checkMotion of one block
+	void        takeScriptDt(); // an O.dt set from outside since this engine set it: setDt off
 	inline void checkMotion(const Body& b, const Polygon2D& poly, Real& travelDt); // (defined, and used, in the .cpp only)
 	void        reportMotion(const Body& b, Real motion, Real r); // (the rare path, out of the loop)
 	inline void keepBoundAhead(const Body& b, const Polygon2D& poly, bool& runCollider);

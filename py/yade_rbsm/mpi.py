@@ -108,6 +108,8 @@ def sync():
     mp.comm.Allreduce(local, glob, op=mp.MPI.MIN)
     if math.isfinite(glob[0]):
         O.dt = float(glob[0])
+        if ts is not None and ts.setDt:
+            ts.dtSet = O.dt  # the ranks' step, not a script's (RbsmTimeStepper.setDt)
     if glob[2] < 0:  # a refusal somewhere: every rank stops here, before NewtonIntegrator
         msgs = mp.comm.allgather(err)
         if ts is not None:

@@ -73,6 +73,8 @@ def test_sorted_bit_for_bit(sorted_runs):
 def test_rank0_alone_prints_and_writes(sorted_runs):
     tmp, _, (m, out) = sorted_runs
     assert out.count("Factor of safety - all methods") == 1
+    # the sync engine's O.dt (the ranks' minimum) is not a script's (RbsmTimeStepper.setDt would go off)
+    assert "note: RbsmTimeStepper" not in out
     assert "yade.mpy: 3 ranks; free blocks cut into 2 vertical slices" in out
     times = [l for l in out.splitlines() if l.startswith("yade.mpy: ranks at t =")]
     assert len(times) == 1 and len(set(times[0].split("=")[1].split(" s after")[0].split(","))) == 1, times

@@ -170,3 +170,23 @@ def test_the_old_impact_step_still_gains_energy():
     r = case("flat_drop", drop=2.0, impact=0.8)
     print(r)
     assert r["rebound"] > 1.1 * r["drop"]
+
+
+@pytest.mark.parametrize("factor", [0.01, 0.5])
+def test_a_step_set_from_the_script_is_kept(factor):
+    """YADE's O.dt = x mid-run (setDt on): before, the stepper set its own step again at the next step and the
+    user's 1 % (or 50 %) was lost silently. Now the script's step is kept (setDt off, with a note) and checked;
+    setDt = True lets the stepper choose again (scenes/script_dt.py)."""
+    r = run_scene("script_dt", {"dt": factor, "resume": True})
+    print(r)
+    assert r["refused"] == "" and r["iter"] == 150, r
+    assert r["after"] == pytest.approx(factor * r["auto"], rel=1e-15) and r["setDt"] is False, r
+    assert r["resumed"] == pytest.approx(r["auto"], rel=0.05), r
+
+
+def test_a_step_set_from_the_script_above_the_limit_is_refused():
+    """O.dt = 5 x the stable step mid-run: before, replaced by the stable step at once (the script's value
+    silently lost); now kept as the script's and refused by the check, with the limit."""
+    r = run_scene("script_dt", {"dt": 5.0})
+    print(r)
+    assert "exceeds the stable limit" in r["refused"] and r["setDt"] is False, r
