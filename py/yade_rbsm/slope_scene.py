@@ -80,7 +80,12 @@ def joints_on(polylines, tol=None):
         return []
     tol = _tolerance(segs, tol)
     out = {(I.id1, I.id2): I for I, _, _ in _reference_segments(segs, tol)}
+    n = len(O.bodies)
     for id1, id2, x0, y0, x1, y1 in _recorded_cuts():
+        # a block erased since, or held by another rank under yade.mpy (the records are every rank's):
+        # YADE's interactions.has() aborts the process for a body that is not there
+        if not all(0 <= i < n and O.bodies[i] is not None for i in (id1, id2)):
+            continue
         if (id1, id2) not in out and O.interactions.has(id1, id2) and _on_segments((x0, y0), (x1, y1), segs, tol, id1, id2):
             I = O.interactions[id1, id2]
             if I.isReal:
