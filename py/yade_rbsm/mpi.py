@@ -39,6 +39,7 @@ SYNC_LABEL = "rbsmMpiSync"
 SYNC_COMMAND = "__import__('yade_rbsm.mpi').mpi.sync()"
 
 _refused = None  # (rank, message) of the last refusal sync() raised on every rank
+_alone = False  # to_serial() was called: this rank (0) goes on without the others
 
 
 def _O():
@@ -203,7 +204,10 @@ def mpirun(steps, with_merge=False):
 
 def distributed():
     """yade.mpy if it is imported with more than one rank (under mpiexec, or after
-    ``mpy.initialize(n)``), else None: then :func:`run` runs distributed."""
+    ``mpy.initialize(n)``), else None: then :func:`run` runs distributed. None on rank 0 after
+    :func:`to_serial` (the workers have left: a stage there, ``settle``, waited for them forever)."""
+    if _alone:
+        return None
     mp = sys.modules.get("yade.mpy")
     if mp is None or mp.comm is None or not mp.numThreads or mp.numThreads < 2:
         return None
@@ -348,7 +352,9 @@ def to_serial():
     continuation is the serial run bit for bit with sorted loops: tests/mpi/test_rows.py.)
     Reading the merged scene (positions, contact forces, factor of safety, snapshots, VTK) needs
     none of this."""
+    global _alone
     O = _O()
+    _alone = True  # run(), settle() and the other helpers go on serially here
     for b in list(O.bodies):
         if b is None:
             continue
