@@ -119,7 +119,7 @@ private:
 	bool impactsMatter() const;
 	Real firstContactSafety() const;
 	Real blockDt(size_t id) const; // damped step of body id's rows (rowBounds)
-	bool ownedHere(const Body& b) const; // the block is integrated on this rank (always true outside yade.mpy's workers)
+	inline bool ownedHere(const Body& b) const; // the block is integrated on this rank (always true outside yade.mpy's workers)
 	void refuse(const std::string& message);
 	void boundsHold(size_t nBodies);
 	// estimate()'s working arrays, kept between calls so that a check allocates nothing once the
