@@ -190,3 +190,16 @@ def test_a_step_set_from_the_script_above_the_limit_is_refused():
     r = run_scene("script_dt", {"dt": 5.0})
     print(r)
     assert "exceeds the stable limit" in r["refused"] and r["setDt"] is False, r
+
+
+@pytest.mark.parametrize("assign", ["on", "toggle"])
+def test_set_dt_assigned_after_a_script_step_lets_the_stepper_choose(assign):
+    """O.dt = x, then RbsmTimeStepper.setDt = True (scripts/qt_view_landslide.py's idiom; "on": setDt was
+    already True, "toggle": off and on again before the next step): before, the stepper took x as the script's
+    (a note, setDt off, O.dt = 0.5 x its step kept: 5.08e-4 s for 1.02e-3 s), as if setDt had not been
+    assigned; a step set so near the limit (0.8 x critical) was refused once the joints stiffened. Now the
+    assignment is the script's last word: the stepper sets its step at the next step."""
+    r = run_scene("script_dt", {"dt": 0.5, "assign": assign})
+    print(r)
+    assert r["refused"] == "" and r["setDt"] is True, r
+    assert r["after"] == pytest.approx(r["auto"], rel=0.05), r

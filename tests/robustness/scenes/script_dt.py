@@ -2,7 +2,9 @@
 dropped 2 cm onto a fixed base, 50 steps, then the script sets O.dt (params "dt": a factor of the stepper's
 step), 50 more steps, then (params "resume") RbsmTimeStepper.setDt = True and 50 more. Emits O.dt after each
 stage, setDt, and whether a step was refused (its message). Before: the stepper set its own step again at the
-next step, silently (a user's smaller step for accuracy was lost)."""
+next step, silently (a user's smaller step for accuracy was lost). params "assign": right after O.dt, "on":
+RbsmTimeStepper.setDt = True (already True), "toggle": setDt = False then True (the script's choice: the
+stepper sets the step again)."""
 import os
 import sys
 
@@ -19,6 +21,11 @@ O.engines = engines(gravity=(0, -9.81, 0))
 advance(50)
 auto = O.dt
 O.dt = p["dt"] * auto
+if p.get("assign") == "on":
+    time_stepper().setDt = True
+elif p.get("assign") == "toggle":
+    time_stepper().setDt = False
+    time_stepper().setDt = True
 refused = ""
 try:
     advance(50)
