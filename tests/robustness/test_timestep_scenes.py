@@ -203,3 +203,14 @@ def test_set_dt_assigned_after_a_script_step_lets_the_stepper_choose(assign):
     print(r)
     assert r["refused"] == "" and r["setDt"] is True, r
     assert r["after"] == pytest.approx(r["auto"], rel=0.05), r
+
+
+def test_a_step_set_from_the_script_after_a_load_is_kept():
+    """O.saveTmp mid-run, O.loadTmp, then O.dt = 1 % of the stepper's step: before, the loaded stepper had no
+    record of the step it had set (dtSet was not saved) and replaced the script's step silently at the next
+    step (1.02e-3 s instead of 1.02e-5 s), as before e1610f8. Now dtSet is saved with O.dt, and the script's
+    step is kept as without the load."""
+    r = run_scene("script_dt", {"dt": 0.01, "reload": True})
+    print(r)
+    assert r["refused"] == "" and r["iter"] == 100, r
+    assert r["after"] == pytest.approx(0.01 * r["auto"], rel=1e-15) and r["setDt"] is False, r
