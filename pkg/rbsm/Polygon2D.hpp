@@ -47,11 +47,13 @@ public:
 	REGISTER_CLASS_INDEX(Polygon2D, Shape);
 
 	/// What followReshape (ReshapedBlocks.hpp) last saw of this shape: revision (-1: nothing yet),
-	/// thickness·area and thickness·polarMoment, and its body's mass and polar inertia. Not saved.
+	/// thickness·area and thickness·polarMoment, and its body's mass, polar inertia and whether it was
+	/// fixed (all six DOFs blocked). Not saved.
 	struct Followed {
 		long revision = -1;
 		Real volume = 0, polar = 0;
 		Real mass = 0, inertia = 0;
+		bool fixed = false;
 	} followed;
 
 private:

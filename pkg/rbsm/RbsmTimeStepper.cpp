@@ -636,7 +636,7 @@ void RbsmTimeStepper::action()
 	// One pass over the bodies at every step, on this thread (at 10⁵ blocks a pass streams every Body,
 	// State, Shape and Bound from memory: two passes cost 40 ns per contact-step, one 20 ns).
 	// - issue 15: a reshaped block gets the mass of its new shape, and a mass or inertia set by a
-	//   script is seen (ReshapedBlocks.hpp); a block whose state the model cannot integrate is reported
+	//   script, or a block fixed or released, is seen (ReshapedBlocks.hpp); a block whose state the model cannot integrate is reported
 	//   by id and the run stops after this step (BlockStateCheck.hpp), without the estimate below, which
 	//   would throw without naming the body.
 	// - watchBody: the collider trigger and the motion check, which read the velocities. Joints made

@@ -64,8 +64,8 @@ public:
 			"Stability needs only safetyFactor, but an impact resolved in two or three steps stores up to (ω·dt)² of its energy in the overlap of its first step: "
 			"at 0.8 a flat block dropped 2 m rebounded to 3.5 m. Bonded joints and damped (quasi-static) stages keep safetyFactor; set it to safetyFactor for the old behaviour. "
 			"Accuracy, not stability: only the step the stepper sets (setDt) takes it; with setDt=False a larger O.dt is not refused for it, and yade_rbsm.critical_time_step() is the stability limit."))
-		((bool, setDt, false, , "Set O.dt to the stable step (True) or only check it and refuse a larger O.dt (False). As YADE's time steppers stop at ``O.dt = x``, an O.dt set from a script (or another engine) between two steps that this engine set switches setDt off, with a note: the step is then the script's, checked against the stable limit. (YADE's ``O.dt = -1`` looks for a TimeStepper, which this GlobalEngine is not: set setDt = True instead.)"))
-		((Real, dtSet, 0, Attr::noSave, "The O.dt this engine set at its last step (0: none since setDt was last off); another O.dt at the next step was set from outside (see :yref:`setDt<RbsmTimeStepper.setDt>`). yade_rbsm.mpi's sync engine, which sets O.dt to the ranks' minimum, sets it too."))
+		((bool, setDt, false, , "Set O.dt to the stable step (True) or only check it and refuse a larger O.dt (False). An O.dt set from a script (or another engine) between two steps that this engine set switches setDt off, with a note (as YADE's time steppers stop at ``O.dt = x``): the step is then the script's, checked against the stable limit. Assigning setDt (True) lets the stepper choose the step again at its next step, also right after ``O.dt = x``. (YADE's ``O.dt = -1`` looks for a TimeStepper, which this GlobalEngine is not.)"))
+		((Real, dtSet, 0, , "The O.dt this engine set at its last step (0: none since setDt was last off or assigned from Python); another O.dt at the next step was set from outside (see :yref:`setDt<RbsmTimeStepper.setDt>`). Saved with the scene, with O.dt: an O.dt set after O.load or O.loadTmp is a script's too. yade_rbsm.mpi's sync engine, which sets O.dt to the ranks' minimum, sets it too."))
 		((int, interval, 100, Attr::triggerPostLoad, "Full estimate every this many steps (the first step always has one); joints made in between are added at once. One full estimate costs about one InteractionLoop pass of the exact geometry (docs/benchmarks.md), so 100 keeps it near 1 % of the run."))
 		((Real, maxDt, std::numeric_limits<Real>::infinity(), Attr::triggerPostLoad, "Largest step that setDt sets [s] (> 0): a user's cap below the stable step."))
 		((Real, maxStepMotion, 0.5, Attr::triggerPostLoad, "Largest motion of a block in one step, (|v| + |ω| R)·dt, as a fraction of its inner radius (the distance from its centroid to its nearest edge line) before it is reported and the run stopped; 0 switches the check off."))
@@ -91,11 +91,16 @@ public:
 		/*py*/ .def("estimate", &RbsmTimeStepper::estimate, "Critical time step of the present joints [s] (inf if there is no RBSM joint yet); also stored in criticalDt.")
 		.def("limit", &RbsmTimeStepper::limit, "Runs a full estimate of the scene as it is now (joints, first contacts, NewtonIntegrator.damping) and returns :yref:`stableDt<RbsmTimeStepper.stableDt>` [s], the step this engine would allow; what yade_rbsm.critical_time_step() returns at safetyFactor=1.")
 		.def("checkNextStep", &RbsmTimeStepper::checkNextStep, "Makes the next run of this engine a full estimate (as at the first step), e.g. after a scene was merged from yade.mpy's ranks (yade_rbsm.mpi.to_serial), whose joints this engine has not seen.")
+		// setDt assigned from Python (ts.setDt = True after O.dt = x, as scripts/qt_view_landslide.py does)
+		// is the script's choice: the O.dt set before it is the stepper's to replace, not a script's step
+		.add_property("setDt", &RbsmTimeStepper::getSetDt, &RbsmTimeStepper::assignSetDt, "Set O.dt to the stable step (True) or only check it and refuse a larger O.dt (False). An O.dt set from a script (or another engine) between two steps that this engine set switches setDt off, with a note (as YADE's time steppers stop at ``O.dt = x``): the step is then the script's, checked against the stable limit. Assigning setDt (True) lets the stepper choose the step again at its next step, also right after ``O.dt = x``. (YADE's ``O.dt = -1`` looks for a TimeStepper, which this GlobalEngine is not.)")
 		.add_property("stableDt", &RbsmTimeStepper::stableDt, "The step this engine allows now [s]: safetyFactor × min(criticalDt, firstContactDt) / √(1 + newtonDamping).")
 	);
 	// clang-format on
 	Real stableDt() const;
 	Real limit();
+	bool getSetDt() const { return setDt; }
+	void assignSetDt(bool on) { setDt = on, dtSet = 0; } // (from Python: the script's choice, see setDt)
 	void checkNextStep() { lastCheck = -1; }
 
 private:

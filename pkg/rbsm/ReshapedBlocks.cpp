@@ -26,9 +26,9 @@ bool followReshapeChange(Body& b, const BodyContainer& bodies)
 	State&     s = *b.state;
 	if (p.followed.revision < 0) // first seen (new, or after O.load): the joints' reduced masses of these masses
 		updateReducedMasses(b, bodies); // (a mass set by a script before O.save; the same values otherwise)
-	else if (p.revision == p.followed.revision) { // mass or inertia set by a script
+	else if (p.revision == p.followed.revision) { // mass or inertia set by a script, or the block fixed or released
 		updateReducedMasses(b, bodies);
-		p.followed.mass = s.mass, p.followed.inertia = s.inertia.z();
+		p.followed.mass = s.mass, p.followed.inertia = s.inertia.z(), p.followed.fixed = fixedBlock(s);
 		return true;
 	}
 	const Real volume = p.thickness * p.area, polar = p.thickness * p.polarMoment;
@@ -38,7 +38,7 @@ bool followReshapeChange(Body& b, const BodyContainer& bodies)
 		s.inertia *= polar / p.followed.polar;
 		updateReducedMasses(b, bodies);
 	}
-	p.followed = Polygon2D::Followed { p.revision, volume, polar, s.mass, s.inertia.z() };
+	p.followed = Polygon2D::Followed { p.revision, volume, polar, s.mass, s.inertia.z(), fixedBlock(s) };
 	return rescale;
 }
 

@@ -11,17 +11,22 @@ namespace yade {
 /// followReshape's work once something changed (out of line: the per-step check stays inline).
 bool followReshapeChange(Body& b, const BodyContainer& bodies);
 
-/// b's shape, mass and polar inertia are what followReshape last saw of them (false for a shape it has
-/// not seen yet: its revision is not the followed -1).
+/// b is fixed for the model: all six DOFs blocked (a fixed end counts as infinite mass).
+inline bool fixedBlock(const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL; }
+
+/// b's shape, mass, polar inertia and fixity are what followReshape last saw of them (false for a shape
+/// it has not seen yet: its revision is not the followed -1).
 inline bool asFollowed(const Polygon2D& p, const State& s)
 {
-	return p.revision == p.followed.revision && s.mass == p.followed.mass && s.inertia.z() == p.followed.inertia;
+	return p.revision == p.followed.revision && s.mass == p.followed.mass && s.inertia.z() == p.followed.inertia
+	        && fixedBlock(s) == p.followed.fixed;
 }
 
 /* If b's Polygon2D changed since this was last called for it, b's mass and polar inertia are
  * scaled by the ratios of thickness·area and thickness·polarMoment, new over old: the block keeps
- * its density. Returns true then, and also when b's mass or polar inertia was set since (by a
- * script: a lighter block needs a shorter step at once; its joints' reduced masses follow). Its
+ * its density. Returns true then, and also when b's mass or polar inertia was set since, or b was
+ * fixed or released (by a script: a lighter block, or one released, needs a shorter step at once; its
+ * joints' reduced masses follow). Its
  * joints are made anew by Ig2 from the new shape (RbsmGeom remembers the Polygon2D.revision it was
  * made for). A shape met for the first time (new, or after O.load) is taken as it is (its joints'
  * reduced masses recomputed from its mass: the same values, unless a script set the mass before O.save);

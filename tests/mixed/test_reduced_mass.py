@@ -18,3 +18,15 @@ def test_block_wall_joint_has_the_block_joint_reduced_mass(block_fixed, wall_mas
     print(r)
     assert r["jointsAtStart"] == 0 and r["iter"] > 5, r  # made mid-run
     assert r["reducedMass"] == pytest.approx(expected(r["blockMass"], r["wallMass"]), rel=1e-12), r
+
+
+def test_a_fixed_block_released_in_contact_gets_its_mass_as_reduced_mass():
+    """A fixed block driven up to a fixed wall (two fixed ends: reduced mass 0, no contact damping), then
+    released by the script: the joint has a free end of the block's mass. Before, blockedDOFs were not
+    followed and the joint kept 0 (dampingCoefficient 0 at contact_damping 0.3); before a08047a the wall
+    joint took the block's mass as made, a block-block joint kept 0 too. Now a release (or a fix) is followed
+    like a mass set by the script (ReshapedBlocks.hpp): the joints' reduced masses are recomputed."""
+    r = run_scene("reduced_mass", {"blockFixed": True, "wallMass": 0.0, "release": True})
+    print(r)
+    assert r["jointsAtStart"] == 0 and r["iter"] > 5, r
+    assert r["reducedMass"] == pytest.approx(r["blockMass"], rel=1e-12), r

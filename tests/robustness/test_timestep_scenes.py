@@ -190,3 +190,27 @@ def test_a_step_set_from_the_script_above_the_limit_is_refused():
     r = run_scene("script_dt", {"dt": 5.0})
     print(r)
     assert "exceeds the stable limit" in r["refused"] and r["setDt"] is False, r
+
+
+@pytest.mark.parametrize("assign", ["on", "toggle"])
+def test_set_dt_assigned_after_a_script_step_lets_the_stepper_choose(assign):
+    """O.dt = x, then RbsmTimeStepper.setDt = True (scripts/qt_view_landslide.py's idiom; "on": setDt was
+    already True, "toggle": off and on again before the next step): before, the stepper took x as the script's
+    (a note, setDt off, O.dt = 0.5 x its step kept: 5.08e-4 s for 1.02e-3 s), as if setDt had not been
+    assigned; a step set so near the limit (0.8 x critical) was refused once the joints stiffened. Now the
+    assignment is the script's last word: the stepper sets its step at the next step."""
+    r = run_scene("script_dt", {"dt": 0.5, "assign": assign})
+    print(r)
+    assert r["refused"] == "" and r["setDt"] is True, r
+    assert r["after"] == pytest.approx(r["auto"], rel=0.05), r
+
+
+def test_a_step_set_from_the_script_after_a_load_is_kept():
+    """O.saveTmp mid-run, O.loadTmp, then O.dt = 1 % of the stepper's step: before, the loaded stepper had no
+    record of the step it had set (dtSet was not saved) and replaced the script's step silently at the next
+    step (1.02e-3 s instead of 1.02e-5 s), as before e1610f8. Now dtSet is saved with O.dt, and the script's
+    step is kept as without the load."""
+    r = run_scene("script_dt", {"dt": 0.01, "reload": True})
+    print(r)
+    assert r["refused"] == "" and r["iter"] == 100, r
+    assert r["after"] == pytest.approx(0.01 * r["auto"], rel=1e-15) and r["setDt"] is False, r

@@ -1,6 +1,7 @@
 """A block and a YADE Wall that meet mid-run (the block already seen by the time stepper, so its joints'
 reduced masses are not recomputed then): params blockFixed, wallMass (the wall free along y with that mass;
-0: fixed by utils.wall). Returns the joint's RbsmGeom.reducedMass with the masses of both ends."""
+0: fixed by utils.wall), release (the fixed block, driven up to the fixed wall, released two steps after they
+met: its joint then has a free end). Returns the joint's RbsmGeom.reducedMass with the masses of both ends."""
 import os
 import sys
 
@@ -28,5 +29,8 @@ for _ in range(4000):  # a step at a time: the wall bounces off within a few doz
     advance(1)
     if any(i.isReal for i in O.interactions):
         break
+if p.get("release"):
+    b.state.vel, b.state.blockedDOFs = (0, 0, 0), "zXY"
+    advance(2)
 I = [i for i in O.interactions if i.isReal][0]
 emit({"jointsAtStart": joints0, "iter": O.iter, "reducedMass": I.geom.reducedMass, "blockMass": b.state.mass, "wallMass": w.state.mass})
