@@ -181,13 +181,15 @@ def mpirun(steps, with_merge=False):
     puts the sync engine after RbsmTimeStepper if ``O.engines`` lacks it (:func:`with_sync`); a
     refused step raises RuntimeError on every rank (see :func:`sync`); any other error that leaves
     the run on this rank alone is printed and ends the MPI job (MPI_Abort, exit status 1): the other
-    ranks would otherwise wait for this one forever. Without yade.mpy's ranks (one process) it is
-    ``O.run(steps, True)``."""
+    ranks would otherwise wait for this one forever; a run the plugin stops early (a report on any rank:
+    every rank stops after the same step) raises RuntimeError on every rank, as :func:`yade_rbsm.advance`
+    does serially. Without yade.mpy's ranks (one process) it is ``O.run(steps, True)``."""
     global _refused
     from yade import mpy as mp
 
     _prepare_split()
     _refused = None
+    end = _O().iter + int(steps)
     try:
         mp.mpirun(steps, withMerge=with_merge)
     except Exception:
@@ -200,6 +202,9 @@ def mpirun(steps, with_merge=False):
                          "so that the other ranks do not wait for it:\n%s" % (mp.rank, traceback.format_exc()))
         sys.stderr.flush()
         mp.comm.Abort(1)
+    if _O().iter < end:  # stopped early: a report of the plugin on some rank (the sync stops every rank there)
+        raise RuntimeError("yade-rbsm: the run was stopped at step %d by an error of the plugin, printed on stderr "
+                           "by the rank that found it (as yade_rbsm.advance raises serially)" % _O().iter)
 
 
 def distributed():

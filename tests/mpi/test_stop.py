@@ -49,6 +49,18 @@ def test_stop_after_step_on_every_rank(case, message):
     assert r.output.count(message) == 1, "the error should be printed once, by the rank that found it\n" + r.tail()
 
 
+def test_stop_raises_on_every_rank_through_yade_rbsm_mpirun():
+    """yade_rbsm.mpi.mpirun (what run(), settle() and strength_reduction() use) raises RuntimeError on every
+    rank when the plugin stops the run, as advance() does serially (a new user's trial: it returned
+    normally after the one step, and settle() went on chunk after chunk, counting steps it never ran)."""
+    s = run_scene("stop", {"mode": "serial", "case": "throw"})
+    r = _mpi({"case": "throw", "runner": "rbsm"})
+    assert r.returncode == 0, r.tail()
+    assert sorted(x["rank"] for x in r.results) == [0, 1, 2], r.tail()
+    for x in r.results:
+        assert x["iter"] == s["iter"] and x["exc"] and "stopped at step %d" % s["iter"] in x["exc"], x
+
+
 def test_refused_step_raises_on_every_rank():
     s = run_scene("stop", {"mode": "serial", "case": "refuse"})
     assert s["iter"] == 0 and "exceeds the stable limit" in s["exc"]
