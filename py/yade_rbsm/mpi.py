@@ -219,6 +219,21 @@ def distributed():
     return mp
 
 
+def check_one_subdomain(where):
+    """Outside yade.mpy's ranks (serially, or on rank 0 after :func:`to_serial`): ValueError if a body is
+    not in subdomain 0. YADE's NewtonIntegrator moves only the bodies of Scene.subdomain, so the blocks
+    of a scene merged from the ranks and saved without to_serial stayed frozen when the file was run
+    serially, silently (a new user's settle "did not converge", ratio 1.79, nothing moving)."""
+    if distributed() is not None:
+        return
+    O = _O()
+    n = sum(1 for b in O.bodies if b is not None and b.subdomain != 0)
+    if n:
+        raise ValueError("%s: %d bodies are in yade.mpy subdomains other than 0 (a scene merged from the ranks and saved "
+                         "without to_serial?): NewtonIntegrator would not move them; call yade_rbsm.mpi.to_serial() "
+                         "first" % (where, n))
+
+
 def rank():
     """This process's yade.mpy rank (0 without yade.mpy)."""
     mp = distributed()

@@ -385,6 +385,7 @@ def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None, den
     from . import omega, mpi
     from .scene import time_stepper
     newton = omega.newton(O)
+    mpi.check_one_subdomain("settle")
     if not any(newton.gravity):  # the ratio is relative to the weight: without it every state is "settled"
         raise ValueError("settle: NewtonIntegrator.gravity is zero: there is no weight to settle under (the "
                          "unbalanced-force ratio is relative to it); set gravity, e.g. yade_rbsm.engines(gravity=(0, -9.81, 0))")

@@ -288,6 +288,7 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     if mpi.distributed() is not None:  # O.saveTmp/loadTmp of a split scene: YADE fails on the workers, rank 0 waits
         raise ValueError("strength_reduction: runs on one process: under yade.mpy merge the scene (yade_rbsm.mpi.merge()) "
                          "and call yade_rbsm.mpi.to_serial() on rank 0, then strength_reduction there")
+    mpi.check_one_subdomain(where)
     start, tol, d_fail, max_steps, check, damping = _trial_args(where, start, tol, d_fail, max_steps, check, damping)
     grow = number(where, "grow", grow, 1, low_open=True)
     rtol = number(where, "rtol", rtol, 0, low_open=True)
