@@ -634,11 +634,11 @@ void RbsmTimeStepper::action()
 	// (first: also in a step that a bad block below ends early, since the recorder would still run)
 	vtkRecorderGuard.check(*scene);
 	// One pass over the bodies at every step, on this thread (at 10⁵ blocks a pass streams every Body,
-	// State, Shape and Bound from memory: two passes cost 40 ns per contact-step, one 20 ns).
+	// State, Shape and Bound from memory: two passes cost 39 ns per contact-step, one 29 ns).
 	// - issue 15: a reshaped block gets the mass of its new shape, and a mass or inertia set by a
-	//   script, or a block fixed or released, is seen (ReshapedBlocks.hpp); a block whose state the model cannot integrate is reported
-	//   by id and the run stops after this step (BlockStateCheck.hpp), without the estimate below, which
-	//   would throw without naming the body.
+	//   script, or a block fixed or released, is seen (ReshapedBlocks.hpp); a block whose state the
+	//   model cannot integrate is reported by id and the run stops after this step (BlockStateCheck.hpp),
+	//   without the estimate below, which would throw without naming the body.
 	// - watchBody: the collider trigger and the motion check, which read the velocities. Joints made
 	//   under density scaling slow their blocks (raiseMassScale): the watch then follows them. A
 	//   reshaped block is watched after the full estimate it causes (its inner radius changes).
