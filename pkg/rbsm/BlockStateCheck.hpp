@@ -8,6 +8,9 @@
 
 namespace yade {
 
+/// The block is fixed for the model: all six DOFs blocked (a fixed end of a joint counts as infinite mass).
+inline bool fixedBlock(const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL; }
+
 /// The problem with body b's state as a block of the model, "" when there is none (or b is not a
 /// Polygon2D block): a free translation with a mass that is not a finite number > 0, a free rotation
 /// about z with such an inertia, an orientation out of the x-y plane (or not finite), a position or

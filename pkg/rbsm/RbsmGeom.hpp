@@ -2,6 +2,7 @@
 #pragma once
 #include <core/IGeom.hpp>
 #include <core/State.hpp>
+#include <pkg/rbsm/BlockStateCheck.hpp>
 #include <pkg/rbsm/kernel/ContactMemory.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 #include <pkg/rbsm/kernel/FrozenContact.hpp>
@@ -131,7 +132,7 @@ public:
 	/// m1·m2/(m1+m2), a fixed block (or one without a positive mass) counting as infinite mass.
 	static Real reducedMassOf(const State& a, const State& b)
 	{
-		auto       infinite = [](const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL || !(s.mass > 0); };
+		auto       infinite = [](const State& s) { return fixedBlock(s) || !(s.mass > 0); };
 		const bool fa = infinite(a), fb = infinite(b);
 		if (fa && fb) return 0;
 		if (fa) return b.mass;

@@ -29,8 +29,7 @@ namespace {
 	// that older builds filled (Σ min(kn, ks)·A): a file with it is estimated anew (postLoad)
 	constexpr size_t kRow = 3;
 
-	bool          isFixed(const State& s) { return (s.blockedDOFs & State::DOF_ALL) == State::DOF_ALL; }
-	rbsm::DynBody dynBody(const State& s) { return rbsm::DynBody { s.mass, s.inertia.z(), s.pos.head<2>(), isFixed(s) }; }
+	rbsm::DynBody dynBody(const State& s) { return rbsm::DynBody { s.mass, s.inertia.z(), s.pos.head<2>(), fixedBlock(s) }; }
 
 	const Polygon2D* polygonOf(const Body& b)
 	{
@@ -385,7 +384,7 @@ Real RbsmTimeStepper::firstContactEstimate()
 		const State& s = *scene->bodies->body[size_t(k.id)]->state;
 		// a block with joints is bounded by them (a bonded sliver is not assumed to meet another
 		// sliver); a joint it makes later is added at the step it is made
-		if (isFixed(s) || !ownedHere(*scene->bodies->body[size_t(k.id)]) || (size_t(kRow * k.id) < rowBounds.size() && rowBounds[kRow * k.id] > 0))
+		if (fixedBlock(s) || !ownedHere(*scene->bodies->body[size_t(k.id)]) || (size_t(kRow * k.id) < rowBounds.size() && rowBounds[kRow * k.id] > 0))
 			continue;
 		const Real partnerN = bestN[0].id != k.id ? bestN[0].value : bestN[1].value;
 		const Real partnerS = bestS[0].id != k.id ? bestS[0].value : bestS[1].value;
@@ -576,7 +575,7 @@ void RbsmTimeStepper::reportMotion(const Body& b, Real motion, Real r)
 	const Polygon2D* poly = polygonOf(b);
 	if (!poly || !ownedHere(b)) return;
 	if (b.bound) keepBoundAhead(b, *poly, runCollider);
-	if (maxStepMotion > 0 && !isFixed(*b.state)) checkMotion(b, *poly, travelDt);
+	if (maxStepMotion > 0 && !fixedBlock(*b.state)) checkMotion(b, *poly, travelDt);
 }
 
 Real RbsmTimeStepper::stableDt() const
@@ -649,7 +648,7 @@ void RbsmTimeStepper::action()
 	Real       travelDt    = std::numeric_limits<Real>::infinity();
 	bool       runCollider = false;
 	{
-		bool reshaped = false, bad = false;
+		bool bad = false;
 		reshapedIds.clear();
 		for (const auto& b : bodies) {
 			if (!b) continue;
@@ -662,14 +661,14 @@ void RbsmTimeStepper::action()
 					continue;
 				}
 			}
-			if (changed) reshaped = true, reshapedIds.push_back(b->id);
+			if (changed) reshapedIds.push_back(b->id);
 			else if (!watchLater) watchBody(*b, travelDt, runCollider);
 		}
 		if (bad) return;
 		// a lighter block may need a shorter step now, its joints were made anew (their phys
 		// again, without a new iterMadeReal) and its inner radius changed: a full estimate now
 		// (a mass set by hand: 0.1 x mid-interval tore a bonded joint before the next estimate)
-		if (reshaped) lastCheck = -1;
+		if (!reshapedIds.empty()) lastCheck = -1;
 	}
 	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: estimate now)
 	if (densityScaling != massScaled) lastCheck = -1, massScaled = densityScaling; // switched: estimate now
