@@ -3,6 +3,7 @@
 10⁵-block wall's extra time per contact goes against a 10³ one).
 
     build/yade-rbsm -j1 -n -x scripts/benchmarks/engine_shares.py [--nx 32] [--ny 32] [--steps 400]
+    build/yade-rbsm -j1 -n -x scripts/benchmarks/engine_shares.py --n 316 [--steps 40]   (an n x n wall)
 
 Builds the wall of scripts/benchmark_contacts.py, runs 300 steps, then times --steps steps with
 O.timingEnabled and prints the whole step and each engine per real contact. A window shorter than
@@ -27,7 +28,8 @@ def arg(name, default):
     return type(default)(sys.argv[sys.argv.index(name) + 1]) if name in sys.argv else default
 
 
-nx, ny, steps = arg("--nx", 32), arg("--ny", 32), arg("--steps", 400)
+n = arg("--n", 0)  # (the first version's option: an n x n wall)
+nx, ny, steps = arg("--nx", n or 32), arg("--ny", n or 32), arg("--steps", 400)
 build_wall(nx=nx, ny=ny, verlet=None)
 advance(300)
 O.timingEnabled = True
