@@ -38,7 +38,7 @@ namespace rbsm_boundary {
 			return true;
 		}
 		g->lost         = false;
-		g->frozen.valid = false;
+		g->frozen.reset();
 		g->frozenSteps  = 0;
 		g->normal       = c.normal;
 		g->p0           = c.p0;

@@ -120,10 +120,10 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 // kernel's round-off slop). A joint opening beyond gets the exact geometry. True with c if followed.
 [[gnu::always_inline]] inline bool Ig2_Polygon2D_Polygon2D_RbsmGeom::followFrozen(const Pair& pair, const Interaction& I, const RbsmGeom& g, rbsm::EdgeContact& c) const
 {
-	if (!(updateTolerance > 0 && g.frozen.valid && !g.lost
-	      && rbsm::frozenDrift(g.frozen, pair.rel, pair.A.circumradius, pair.B.circumradius) <= updateTolerance * pair.minSize))
+	const rbsm::FrozenContact* frozen = updateTolerance > 0 && !g.lost ? g.frozenContact() : nullptr;
+	if (!(frozen && rbsm::frozenDrift(*frozen, pair.rel, pair.A.circumradius, pair.B.circumradius) <= updateTolerance * pair.minSize))
 		return false;
-	c               = rbsm::frozenContact(g.frozen, pair.rel);
+	c               = rbsm::frozenContact(*frozen, pair.rel);
 	const Real slop = rbsm::roundOffSlop(pair.minSize), dMin = std::min(c.d0, c.d1);
 	return dMin >= -slop || dMin >= -(reach(I, true) + slop); // (reach ≥ 0: asked only for an opening joint)
 }

@@ -9,18 +9,20 @@ namespace yade {
 
 YADE_PLUGIN((RbsmGeom));
 
-void RbsmGeom::freeze(const rbsm::EdgeContact& c, const rbsm::Pose2& rel) { frozen = rbsm::freezeContact(c, rel); }
+void RbsmGeom::freeze(const rbsm::EdgeContact& c, const rbsm::Pose2& rel) { frozen.set(rbsm::freezeContact(c, rel)); }
 
 void RbsmGeom::markLost(Real separationNow)
 {
-	lost         = true;
-	separation   = separationNow;
-	frozen.valid = false;
+	lost       = true;
+	separation = separationNow;
+	frozen.reset();
 }
 
 void RbsmGeom::postLoad(RbsmGeom&)
 {
-	frozen = rbsm::unpackFrozen(frozenState);
+	const rbsm::FrozenContact f = rbsm::unpackFrozen(frozenState);
+	if (f.valid) frozen.set(f);
+	else frozen.reset();
 	if (nIP > 0) setIntegrationPoints(nIP); // throws for a file with nIP outside 1..8
 	else rule = nullptr;
 }

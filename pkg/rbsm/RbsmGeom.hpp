@@ -6,6 +6,7 @@
 #include <pkg/rbsm/kernel/ContactMemory.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 #include <pkg/rbsm/kernel/FrozenContact.hpp>
+#include <pkg/rbsm/kernel/HeapValue.hpp>
 #include <pkg/rbsm/kernel/IntegrationRule.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
 #include <pkg/rbsm/kernel/Pose2.hpp>
@@ -106,23 +107,30 @@ public:
 	std::vector<Real> pyNormalVelocity() const;
 	std::vector<Real> pyShearVelocity() const;
 	std::vector<Real> pyShearIncrement() const;
+	/// The contact as material points at its last exact update (Ig2's updateTolerance > 0 only;
+	/// rbsm::FrozenContact), on the heap from the first freeze: where updateTolerance is 0 a joint
+	/// carries one pointer, not the 136 bytes (every byte of a joint streams at every step at 10⁵ blocks).
+	/// Saved through frozenState, so that a loaded scene continues like the uninterrupted run.
+	rbsm::HeapValue<rbsm::FrozenContact> frozen;
+	/// The frozen contact if there is a valid one, else null.
+	const rbsm::FrozenContact* frozenContact() const
+	{
+		const rbsm::FrozenContact* f = frozen.get();
+		return f && f->valid ? f : nullptr;
+	}
+	/// Polygon2D.revision of the two blocks when the joint was made (not saved: 0 after a load, like
+	/// the shapes'); Ig2 makes the joint anew when a block has been reshaped since.
+	long shapeRevision1 = 0, shapeRevision2 = 0;
 	/// What the last full separating-axis search of this contact found (rbsm::SearchMemory): lets the
 	/// next steps skip the search while it provably would choose the same edge. Not saved: after a
 	/// load the first step searches in full, with the same result.
 	rbsm::SearchMemory searchMemory;
-	/// The contact as material points at its last exact update (Ig2's updateTolerance > 0 only;
-	/// rbsm::FrozenContact). Saved through frozenState, so that a loaded scene continues like the
-	/// uninterrupted run.
-	rbsm::FrozenContact frozen;
-	/// Polygon2D.revision of the two blocks when the joint was made (not saved: 0 after a load, like
-	/// the shapes'); Ig2 makes the joint anew when a block has been reshaped since.
-	long shapeRevision1 = 0, shapeRevision2 = 0;
 	/// Drops what the joint remembers of the blocks' old shapes (edge numbers, search memory, frozen
 	/// contact) and records the new revisions.
 	void forgetShapes(long revision1, long revision2)
 	{
 		searchMemory   = rbsm::SearchMemory();
-		frozen.valid   = false;
+		frozen.reset();
 		refBody        = 0;
 		refEdge        = -1;
 		frozenSteps    = 0;
@@ -139,7 +147,7 @@ public:
 		if (fb) return a.mass;
 		return a.mass * b.mass / (a.mass + b.mass);
 	}
-	void                preSave(RbsmGeom&) { frozenState = rbsm::packFrozen(frozen); }
+	void                preSave(RbsmGeom&) { frozenState = frozen.get() ? rbsm::packFrozen(*frozen.get()) : std::vector<Real>(); }
 	void                postLoad(RbsmGeom&);
 	REGISTER_CLASS_INDEX(RbsmGeom, IGeom);
 };
@@ -178,7 +186,7 @@ inline void RbsmGeom::update(const rbsm::EdgeContact& c, const rbsm::Pose2& fram
 inline void RbsmGeom::exactAt(const rbsm::EdgeContact& c, const rbsm::Pose2& rel, bool keepFrozen)
 {
 	if (keepFrozen) freeze(c, rel);
-	else frozen.valid = false;
+	else frozen.reset();
 	frozenSteps = 0;
 }
 
