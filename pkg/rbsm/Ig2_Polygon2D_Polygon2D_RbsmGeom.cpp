@@ -120,7 +120,7 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 // kernel's round-off slop). A joint opening beyond gets the exact geometry. True with c if followed.
 [[gnu::always_inline]] inline bool Ig2_Polygon2D_Polygon2D_RbsmGeom::followFrozen(const Pair& pair, const Interaction& I, const RbsmGeom& g, rbsm::EdgeContact& c) const
 {
-	const rbsm::FrozenContact* frozen = updateTolerance > 0 && !g.lost ? g.frozenContact() : nullptr;
+	const rbsm::FrozenContact* frozen = updateTolerance > 0 && !g.lost ? g.frozen.get() : nullptr;
 	if (!(frozen && rbsm::frozenDrift(*frozen, pair.rel, pair.A.circumradius, pair.B.circumradius) <= updateTolerance * pair.minSize))
 		return false;
 	c               = rbsm::frozenContact(*frozen, pair.rel);

@@ -9,7 +9,13 @@ namespace yade {
 
 YADE_PLUGIN((RbsmGeom));
 
-void RbsmGeom::freeze(const rbsm::EdgeContact& c, const rbsm::Pose2& rel) { frozen.set(rbsm::freezeContact(c, rel)); }
+void RbsmGeom::freeze(const rbsm::EdgeContact& c, const rbsm::Pose2& rel) { holdFrozen(rbsm::freezeContact(c, rel)); }
+
+void RbsmGeom::holdFrozen(const rbsm::FrozenContact& f)
+{
+	if (f.valid) frozen.set(f);
+	else frozen.reset();
+}
 
 void RbsmGeom::markLost(Real separationNow)
 {
@@ -20,9 +26,7 @@ void RbsmGeom::markLost(Real separationNow)
 
 void RbsmGeom::postLoad(RbsmGeom&)
 {
-	const rbsm::FrozenContact f = rbsm::unpackFrozen(frozenState);
-	if (f.valid) frozen.set(f);
-	else frozen.reset();
+	holdFrozen(rbsm::unpackFrozen(frozenState));
 	if (nIP > 0) setIntegrationPoints(nIP); // throws for a file with nIP outside 1..8
 	else rule = nullptr;
 }

@@ -98,6 +98,8 @@ public:
 	void exactAt(const rbsm::EdgeContact& c, const rbsm::Pose2& rel, bool keepFrozen);
 	/// frozen = rbsm::freezeContact(c, rel) (out of line: rare, and large for the callers of exactAt).
 	void freeze(const rbsm::EdgeContact& c, const rbsm::Pose2& rel);
+	/// frozen = f if f is valid, else none.
+	void holdFrozen(const rbsm::FrozenContact& f);
 	/// The blocks no longer face each other within reach: handed to the law as lost (it ends the joint).
 	void markLost(Real separationNow);
 	// Python's per-point lists
@@ -110,14 +112,9 @@ public:
 	/// The contact as material points at its last exact update (Ig2's updateTolerance > 0 only;
 	/// rbsm::FrozenContact), on the heap from the first freeze: where updateTolerance is 0 a joint
 	/// carries one pointer, not the 136 bytes (every byte of a joint streams at every step at 10⁵ blocks).
-	/// Saved through frozenState, so that a loaded scene continues like the uninterrupted run.
+	/// Held only while valid (holdFrozen). Saved through frozenState, so that a loaded scene continues
+	/// like the uninterrupted run.
 	rbsm::HeapValue<rbsm::FrozenContact> frozen;
-	/// The frozen contact if there is a valid one, else null.
-	const rbsm::FrozenContact* frozenContact() const
-	{
-		const rbsm::FrozenContact* f = frozen.get();
-		return f && f->valid ? f : nullptr;
-	}
 	/// Polygon2D.revision of the two blocks when the joint was made (not saved: 0 after a load, like
 	/// the shapes'); Ig2 makes the joint anew when a block has been reshaped since.
 	long shapeRevision1 = 0, shapeRevision2 = 0;
