@@ -315,10 +315,15 @@ nchunks = 3
 mobile = [b.id for b in sb.free]
 t_dyn0 = O.time
 t0 = time.time()
+balance0 = None  # O.energy at the end of the first chunk: the balance of the dynamic stage is checked from there
+if mp is None:
+    O.trackEnergy = True  # (the forces and the motion are the same with it)
 for k in range(nchunks):
     while O.time - t_dyn0 < args.time * (k + 1) / nchunks * (1 - 1e-9):  # O.time: the same on every rank
         if mp is None:
             yr.advance(max(1, min(200, nsteps // nchunks)))
+            if balance0 is None:
+                balance0 = (O.energy.total(), O.energy["gravWork"])
         else:
             rmpi.run(max(1, min(200, nsteps // nchunks)))
     if mp is not None:
@@ -334,6 +339,10 @@ for k in range(nchunks):
     snapshots.snapshot(os.path.join(args.out, name), "dynamic stage, t = %.2f s" % (O.time - t_dyn0), O=O, slip=slip)
     if mp is not None:
         vtk_series.write()
+if balance0 is not None:
+    grav = balance0[1] - O.energy["gravWork"]
+    print("  energy balance of the dynamic stage (O.energy, J/m): %s; off by %.3g %% of the work of gravity"
+          % (", ".join("%s %.4g" % kv for kv in sorted(O.energy.items())), 100 * (O.energy.total() - balance0[0]) / grav))
 if master and vtk_series.entries["blocks"][-1][0] < O.time:
     vtk_series.write()  # the last state
 png = txt = "not recorded (--mpi)"

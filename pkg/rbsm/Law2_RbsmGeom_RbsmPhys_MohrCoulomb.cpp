@@ -28,6 +28,16 @@ namespace {
 }
 
 namespace {
+	// The springs' energy of the points as they were at the last step, on a segment of that length [J].
+	Real storedEnergy(const RbsmPhys& p, const RbsmGeom& g, Real length, int n)
+	{
+		const rbsm::JointParams params { p.kn, p.ks };
+		Real                    e = 0;
+		for (int k = 0; k < n; k++)
+			e += rbsm::detail::springEnergy(params, p.point(k).normalTraction, p.point(k).joint.shearTraction, g.rule->w[k] * length * g.thickness);
+		return e;
+	}
+
 	// The geometry found the blocks apart (RbsmGeom.lost): every point breaks and opens, the joint goes.
 	void loseJoint(RbsmPhys& p, int n)
 	{
@@ -43,16 +53,24 @@ namespace {
 	// A frictional contact that grows (a block tipping onto its face) takes in material with no shear
 	// displacement: its points' shear tractions, spread over the new length, keep their old force
 	// (held, they would create shear force and energy from nothing). Bonded points are the shared
-	// edge's material and keep theirs.
-	void spreadShearOverGrowth(RbsmPhys& p, const RbsmGeom& g, int n)
+	// edge's material and keep theirs. Returns the shear springs' energy this loses, the area of every
+	// point following the length (negative for bonded points that grow; with O.trackEnergy).
+	Real spreadShearOverGrowth(RbsmPhys& p, const RbsmGeom& g, int n, bool withEnergy)
 	{
-		RbsmPhys::Point* const pts = p.pointData();
-		if (p.contactLength > 0 && g.length > p.contactLength) {
-			const Real keep = p.contactLength / g.length;
-			for (int k = 0; k < n; k++)
-				if (!pts[k].joint.intact) pts[k].joint.shearTraction *= keep;
+		const Real old = p.contactLength, length = g.length;
+		p.contactLength = length;
+		// nothing to spread, and no energy to count (the common cases: no growth, or energy not tracked)
+		if (!(old > 0) || length == old || (length < old && !withEnergy)) return 0;
+		RbsmPhys::Point* const pts  = p.pointData();
+		const Real             keep = length > old ? old / length : Real(1);
+		Real                   lost = 0;
+		for (int k = 0; k < n; k++) {
+			Real&      tau   = pts[k].joint.shearTraction;
+			const Real after = pts[k].joint.intact ? tau : tau * keep;
+			if (withEnergy && p.ks > 0) lost += g.rule->w[k] * g.thickness * (old * tau * tau - length * after * after) / (2 * p.ks);
+			tau = after;
 		}
-		p.contactLength = g.length;
+		return lost;
 	}
 
 	// The bond is the segment the joint was made on. A segment grows by closing (a face bonded across a
@@ -82,9 +100,26 @@ namespace {
 	};
 	struct JointSums {
 		Vector2r force    = Vector2r::Zero();
-		Real     momentP0 = 0, elastic = 0, dissipated = 0, viscous = 0, normalForce = 0, shearForce = 0, strength = 0;
+		Real     momentP0 = 0, elastic = 0, dissipated = 0, released = 0, viscous = 0, normalForce = 0, shearForce = 0, strength = 0;
 		bool     carries  = false;
 	};
+
+	// What a point adds to the sums: its force (springs fn, fs, with the dashpots' share) at s along the
+	// segment, and its law's results r; strength: its Mohr-Coulomb strength times its area.
+	[[gnu::always_inline]] inline void addToSums(const RbsmGeom& g, const JointStep& j, Real s, Real fn, Real fs, const rbsm::JointPointResult& r,
+	                                             bool open, Real strength, JointSums& sum)
+	{
+		sum.carries |= !open;
+		const Vector2r f = fn * g.normal + fs * j.tangent;
+		sum.force += f;
+		sum.momentP0 += s * cross(j.seg, f); // (x_k − p0) × f, x_k − p0 = s_k (p1 − p0)
+		sum.elastic += r.elasticEnergy;
+		sum.dissipated += r.dissipated;
+		sum.released += r.released;
+		sum.normalForce += r.normalForce;
+		sum.shearForce += r.shearForce;
+		sum.strength += strength;
+	}
 
 	// Point k of the rule: the law at the point (rbsm::updateJointPoint) and the viscous damping, added
 	// to the sums. (Inlined early, so that the sums can stay in registers.)
@@ -104,22 +139,56 @@ namespace {
 			// shear damping only on the elastic branch: a slipping point is at its frictional limit
 			const Real dn = p.dampingCoefficient * vn * a;
 			Real       ds = st.slipping ? 0 : -p.dampingCoefficient * vs * a;
-			// the spring and the dashpot together stay within the Mohr-Coulomb strength
-			const Real limit = (st.intact ? j.params.cohesion : 0) * a + std::max<Real>(0, fn + dn) * p.tanPhi;
+			// the spring and the dashpot together stay within the Mohr-Coulomb strength of the spring's
+			// normal force: the dashpot damps, it adds no friction (a landing block is not braked by it)
+			const Real limit = (st.intact ? j.params.cohesion : 0) * a + std::max<Real>(0, fn) * p.tanPhi;
 			ds               = std::clamp(fs + ds, -limit, limit) - fs;
 			fn += dn;
 			fs += ds;
 			sum.viscous += (dn * vn - ds * vs) * j.dt;
 		}
-		sum.carries |= !st.open;
-		const Vector2r f = fn * g.normal + fs * j.tangent;
-		sum.force += f;
-		sum.momentP0 += s * cross(j.seg, f); // (x_k − p0) × f, x_k − p0 = s_k (p1 − p0)
-		sum.elastic += r.elasticEnergy;
-		sum.dissipated += r.dissipated;
-		sum.normalForce += r.normalForce;
-		sum.shearForce += r.shearForce;
-		sum.strength += ((st.intact ? j.params.cohesion : 0) + std::max<Real>(0, r.normalTraction) * p.tanPhi) * a;
+		addToSums(g, j, s, fn, fs, r, st.open, ((st.intact ? j.params.cohesion : 0) + std::max<Real>(0, r.normalTraction) * p.tanPhi) * a, sum);
+	}
+}
+
+namespace {
+	// A frictional joint (no intact point): its points together (rbsm::updateFrictionalPoints), then the
+	// dashpots and the sums as addPoint's. The shear dashpots act while the joint sticks, and with the
+	// springs they stay within the joint's friction of the springs' normal force. N >= n: the size of
+	// the point arrays (small for the common 2 points: they are set up at every step).
+	template <int N> void addFrictionalPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n, JointSums& sum)
+	{
+		RbsmPhys::Point* const pts = p.pointData();
+		Real                   s[N], a[N], overlap[N], dus[N], vn[N], vs[N];
+		for (int k = 0; k < n; k++) {
+			s[k]             = g.rule->s[k];
+			a[k]             = g.rule->w[k] * j.area;
+			const Vector2r v = j.kin.velocity(s[k]);
+			vn[k]            = -v.dot(g.normal);
+			vs[k]            = v.dot(j.tangent);
+			overlap[k]       = j.kin.overlap(s[k]);
+			dus[k]           = vs[k] * j.dt;
+		}
+		rbsm::JointPointResult r[N];
+		rbsm::updateFrictionalPoints([pts](int k) -> rbsm::JointPointState& { return pts[k].joint; }, n, j.params, overlap, dus, a, r, j.trackEnergy);
+		Real dn[N] = {}, ds[N] = {}, keep = 1;
+		if (j.damped) {
+			Real springs = 0, dashpots = 0, limit = 0;
+			for (int k = 0; k < n; k++) {
+				if (pts[k].joint.open) continue; // no damping force across an open point
+				dn[k] = p.dampingCoefficient * vn[k] * a[k];
+				ds[k] = pts[k].joint.slipping ? 0 : -p.dampingCoefficient * vs[k] * a[k];
+				springs += r[k].shearForce;
+				dashpots += ds[k];
+				limit += r[k].normalForce * p.tanPhi;
+			}
+			if (std::abs(springs + dashpots) > limit && dashpots != 0) keep = (std::copysign(limit, springs + dashpots) - springs) / dashpots;
+		}
+		for (int k = 0; k < n; k++) {
+			pts[k].normalTraction = r[k].normalTraction;
+			sum.viscous += (dn[k] * vn[k] - keep * ds[k] * vs[k]) * j.dt;
+			addToSums(g, j, s[k], r[k].normalForce + dn[k], r[k].shearForce + keep * ds[k], r[k], pts[k].joint.open, r[k].normalForce * p.tanPhi, sum);
+		}
 	}
 }
 
@@ -133,6 +202,7 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		return false; // YADE erases the interaction; the contact is made again, with Ip2's joint
 	}
 	if (g.lost) {
+		if (scene->trackEnergy) scene->energy->add(storedEnergy(p, g, p.contactLength, n), "jointRelease", jointReleaseIx, /*cumulative*/ false);
 		loseJoint(p, n);
 		return false;
 	}
@@ -149,10 +219,17 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		j.params.cohesion *= bonded;
 		j.params.tensileStrength *= bonded;
 	}
-	spreadShearOverGrowth(p, g, n);
-	JointSums sum;
-	for (int k = 0; k < n; k++)
-		addPoint(g, p, j, k, sum);
+	// frictional: no bond left (or none to begin with): the joint slips as a whole
+	const bool frictional = (p.cohesion == 0 && p.tensileStrength == 0) || p.nIntact() == 0;
+	JointSums  sum;
+	sum.released = spreadShearOverGrowth(p, g, n, scene->trackEnergy);
+	if (frictional) {
+		if (n <= RbsmPhys::kInlinePoints) addFrictionalPoints<RbsmPhys::kInlinePoints>(g, p, j, n, sum);
+		else addFrictionalPoints<rbsm::kMaxIntegrationPoints>(g, p, j, n, sum);
+	}
+	else
+		for (int k = 0; k < n; k++)
+			addPoint(g, p, j, k, sum);
 	const Real torque2 = sum.momentP0 + cross(g.p0 - g.centroid2, sum.force);
 	const Real torque1 = -(sum.momentP0 + cross(g.p0 - g.centroid1, sum.force));
 	p.normalForce      = sum.normalForce;
@@ -173,10 +250,11 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 
 	if (scene->trackEnergy) {
 		// copies: the tracker takes references, which would keep all of sum on the stack
-		const Real elastic = sum.elastic, dissipated = sum.dissipated, viscous = sum.viscous;
+		const Real elastic = sum.elastic, dissipated = sum.dissipated, viscous = sum.viscous, released = sum.released;
 		scene->energy->add(elastic, "elastPotential", elastPotentialIx, /*reset every step*/ true);
 		if (dissipated != 0) scene->energy->add(dissipated, "plastDissip", plastDissipIx, /*cumulative*/ false);
 		if (viscous != 0) scene->energy->add(viscous, "viscDamp", viscDampIx, /*cumulative*/ false);
+		if (released != 0) scene->energy->add(released, "jointRelease", jointReleaseIx, /*cumulative*/ false);
 	}
 	return true;
 }

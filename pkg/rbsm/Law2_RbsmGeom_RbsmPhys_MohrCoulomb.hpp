@@ -21,14 +21,20 @@ public:
 		"* σn = kn·δn (δn total overlap from the geometry, > 0 compression) and τ ← τ − ks·Δus (incremental shear);\n"
 		"* tension cut-off: an intact point with σn < −σt breaks irreversibly (c, σt → 0) and opens; a broken point with "
 		"δn ≤ 0 is open and carries nothing;\n"
-		"* Mohr-Coulomb: |τ| ≤ c + σn tanφ; beyond it an intact point breaks (c → 0) and τ returns to ±σn tanφ (slip).\n\n"
+		"* Mohr-Coulomb: |τ| ≤ c + σn tanφ; beyond it an intact point breaks (c → 0) and τ returns to ±σn tanφ (slip);\n"
+		"* a frictional joint (no intact point left, or c = σt = 0) slips as a whole, by Coulomb's law for its "
+		"resultant |Σ τ_k a_k| ≤ tanφ Σ σn_k a_k, with the same plastic slip at every point: two rigid blocks slide by the "
+		"same amount all along their joint.\n\n"
 		"The tractions, times the tributary area w_k·ℓ·thickness, give a force and a moment on each block (force on body 2 "
-		"= Σ (σn n + τ t) a_k, opposite on body 1). With O.trackEnergy: 'elastPotential' (spring energy) and 'plastDissip' "
-		"(slip dissipation), plus 'viscDamp' if dampingRatio > 0. A joint that is open everywhere and separated is removed.",
-		((Real, dampingRatio, 0, Attr::triggerPostLoad, "Viscous contact damping as a fraction of critical damping of the joint (normal and shear), ξ; 0 disables it (no cost)."))
+		"= Σ (σn n + τ t) a_k, opposite on body 1). With O.trackEnergy: 'elastPotential' (spring energy), 'plastDissip' "
+		"(friction's work on the plastic slip), 'jointRelease' (spring energy lost without friction work: points that open or break, "
+		"contact length that goes, the rest of a return to the friction surface) and 'viscDamp' if dampingRatio > 0, so that "
+		"with NewtonIntegrator's 'kinetic' and 'gravWork' O.energy.total() stays constant. A joint that is open everywhere and separated is removed.",
+		((Real, dampingRatio, 0, Attr::triggerPostLoad, "Viscous contact damping as a fraction of critical damping of the joint (normal and shear), ξ; 0 disables it (no cost). The shear dashpot acts while the joint sticks, and spring and dashpot together stay within the Mohr-Coulomb strength of the springs' normal force: the dashpot damps, it adds no friction."))
 		((int, plastDissipIx, -1, (Attr::hidden | Attr::noSave), "Index of plastDissip in O.energy."))
 		((int, elastPotentialIx, -1, (Attr::hidden | Attr::noSave), "Index of elastPotential in O.energy."))
-		((int, viscDampIx, -1, (Attr::hidden | Attr::noSave), "Index of viscDamp in O.energy.")),
+		((int, viscDampIx, -1, (Attr::hidden | Attr::noSave), "Index of viscDamp in O.energy."))
+		((int, jointReleaseIx, -1, (Attr::hidden | Attr::noSave), "Index of jointRelease in O.energy.")),
 		/*ctor*/,
 		/*py*/
 	);

@@ -10,8 +10,9 @@
   v0²/(2 g tanφ) within 2 %.
 * Same with contact damping ξ = 0.3: the total dissipation plastDissip + viscDamp equals the kinetic
   energy lost within 2 %, and the tangential contact force never exceeds the Coulomb bound tanφ·N
-  (c = 0) - the viscous shear traction must not carry the joint beyond its Mohr-Coulomb strength
-  (checked on |Ft|/|Fn| of the block over the first 200 steps after the launch, tolerance 1e-6).
+  (c = 0) of the springs' normal force N - the viscous shear traction must not carry the joint beyond its
+  Mohr-Coulomb strength, and the normal dashpot adds no friction (issue 35: a landing block was braked by
+  it) (checked on |Ft|/N of the block over the first 200 steps after the launch, tolerance 1e-6).
 """
 from math import radians, tan
 

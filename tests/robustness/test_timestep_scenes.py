@@ -123,11 +123,16 @@ def test_random_pile(seed, threads):
     x18000, blocks thrown out at km/s). With the stepper alone the energy still grew by 0.6 %, 1.4 %, 2.2 % of the
     work of gravity (seeds 1-3): a frictional contact that grew kept its shear tractions over the new length
     (force from nothing); with new contact length carrying no shear, the growth is 0.00 % on the three seeds.
-    Asserted: no NaN, no block leaves the box, growth at most 1 % of the work of gravity (the issue's figure)."""
+    Asserted: no NaN, no block leaves the box, growth at most 1 % of the work of gravity (the issue's figure).
+    And the balance closes (issue 35, item 3): at the end O.energy.total() is within 1 % of the work of gravity
+    of its start. Before, 2.3-2.4 % of it was lost unaccounted (the shear springs of points that opened, of
+    contact length that went, the rest of the returns to the friction surface): now 'jointRelease'."""
     r = run_scene("random_pile", {"seed": seed, "t_end": 0.3, "E": 1e8, "width": 80}, threads=threads)
-    print({k: v for k, v in r.items() if k != "energy"}, "growth/grav = %.4f" % (r["worst_growth"] / r["grav_work"]))
+    print({k: v for k, v in r.items() if k != "energy"}, r["energy"], "growth/grav = %.4f, drift/grav = %.4f"
+          % (r["worst_growth"] / r["grav_work"], r["drift"] / r["grav_work"]))
     assert r["finite"] and r["left"] == 0
     assert r["worst_growth"] <= 0.01 * r["grav_work"]
+    assert abs(r["drift"]) <= 0.01 * r["grav_work"]
 
 
 @pytest.mark.parametrize("kw", [dict(phi=0.0), dict(phi=30.0), dict(phi=30.0, safety=0.5),

@@ -16,6 +16,7 @@
 // weight * length * thickness); energies in J.
 #pragma once
 
+#include <pkg/rbsm/kernel/IntegrationRule.hpp>
 #include <pkg/rbsm/kernel/Types.hpp>
 
 #include <algorithm>
@@ -46,6 +47,11 @@ struct JointPointResult {
 	Real shearForce     = 0;   ///< tau * area (N), on body 2 along +t
 	Real elasticEnergy  = 0;   ///< (sigma_n^2/(2 kn) + tau^2/(2 ks)) * area (J), after the update
 	Real dissipated     = 0;   ///< frictional dissipation this step: tau_max * |plastic slip| * area (J)
+	/// Spring energy lost this step without friction work (J): a point that opens or breaks drops its
+	/// springs' energy; a return to the friction surface loses (|trial| − tau_max)²/(2 ks) beyond friction's
+	/// tau_max × slip, less the (ks dus)²/(2 ks) that the explicit step's work, old traction × dus, leaves out
+	/// (0 in steady sliding; > 0 where the friction limit falls, the cohesion of a point that breaks in shear).
+	Real released       = 0;
 	bool brokeInTension = false;
 	bool brokeInShear   = false;
 };
@@ -63,11 +69,22 @@ struct JointPointResult {
 ///     Mohr-Coulomb of continuum strength reduction.
 /// Cheap path: c = sigma_t = 0 means a cohesionless joint, treated as already broken (no
 /// strength checks beyond friction). A point that has broken never heals.
-/// withEnergy = false leaves elasticEnergy at 0 (a scene without O.trackEnergy does not pay for it).
+/// withEnergy = false leaves elasticEnergy and released at 0 (a scene without O.trackEnergy does not pay for it).
 /// Inline: the plugin's law calls it for every point of every joint at every step.
 inline JointPointResult updateJointPoint(JointPointState& state, const JointParams& p, Real deltaN, Real dus, Real area, bool withEnergy = true);
 
 namespace detail {
+	/// The energy a return to the friction surface by `excess` (|trial| − tau_max, Pa; none if <= 0) loses
+	/// beyond friction's work [J] (JointPointResult::released).
+	inline Real returnLoss(const JointParams& p, Real excess, Real dus, Real area)
+	{
+		return (excess > 0 && p.ks > 0) ? (excess * excess - p.ks * p.ks * dus * dus) / (2 * p.ks) * area : Real(0);
+	}
+	/// The springs' energy at tractions (sn, tau) on area [J].
+	inline Real springEnergy(const JointParams& p, Real sn, Real tau, Real area)
+	{
+		return ((p.kn > 0 ? sn * sn / (2 * p.kn) : 0) + (p.ks > 0 ? tau * tau / (2 * p.ks) : 0)) * area;
+	}
 	inline JointPointResult openPoint(JointPointState& s)
 	{
 		s.shearTraction = 0;
@@ -85,6 +102,7 @@ namespace detail {
 	inline JointPointResult frictionalPoint(JointPointState& s, const JointParams& p, Real deltaN, Real dus, Real area, bool withEnergy)
 	{
 		const bool closed = deltaN > 0; // rule 3: a broken point carries nothing unless in compression
+		const Real before = s.shearTraction;
 		const Real sn     = closed ? p.kn * deltaN : Real(0);
 		const Real trial  = closed ? s.shearTraction - p.ks * dus : Real(0);
 		const Real tmax   = sn * p.tanPhi;
@@ -100,7 +118,11 @@ namespace detail {
 		r.shearForce     = tau * area;
 		// plastic slip (|trial| − tmax)/ks, dissipated against the friction tmax
 		r.dissipated = (excess > 0 && p.ks > 0) ? tmax * (excess / p.ks) * area : Real(0);
-		if (withEnergy) r.elasticEnergy = ((p.kn > 0 ? sn * sn / (2 * p.kn) : 0) + (p.ks > 0 ? tau * tau / (2 * p.ks) : 0)) * area;
+		if (withEnergy) {
+			r.elasticEnergy = springEnergy(p, sn, tau, area);
+			// opened: its shear spring goes; slipped: the part of the return friction does not do
+			r.released = closed ? returnLoss(p, excess, dus, area) : springEnergy(p, 0, before, area);
+		}
 		return r;
 	}
 } // namespace detail
@@ -113,15 +135,16 @@ inline JointPointResult updateJointPoint(JointPointState& s, const JointParams& 
 
 	if (!s.intact) return detail::frictionalPoint(s, p, deltaN, dus, area, withEnergy);
 
-	Real sn = p.kn * deltaN;
+	Real       sn  = p.kn * deltaN;
+	Real       tau = s.shearTraction - p.ks * dus;
 	if (s.intact && sn < -p.tensileStrength) {
 		s.intact = false;
 		JointPointResult o = detail::openPoint(s);
 		o.brokeInTension   = true;
+		if (withEnergy) o.released = detail::springEnergy(p, sn, tau, area);
 		return o;
 	}
 
-	Real       tau  = s.shearTraction - p.ks * dus;
 	const Real c    = s.intact ? p.cohesion : 0;
 	Real       tmax = c + sn * p.tanPhi;
 	s.open          = false;
@@ -133,6 +156,7 @@ inline JointPointResult updateJointPoint(JointPointState& s, const JointParams& 
 			r.brokeInShear = true;
 			if (deltaN <= 0) {
 				detail::openPoint(s);
+				if (withEnergy) r.released = detail::springEnergy(p, sn, tau, area);
 				return r; // tractions and energies zero, the event is reported
 			}
 			tmax = sn * p.tanPhi;
@@ -142,6 +166,7 @@ inline JointPointResult updateJointPoint(JointPointState& s, const JointParams& 
 			tau              = std::copysign(tmax, trial);
 			const Real slip  = (p.ks > 0) ? (std::abs(trial) - tmax) / p.ks : 0;
 			r.dissipated     = tmax * slip * area;
+			if (withEnergy) r.released = detail::returnLoss(p, std::abs(trial) - tmax, dus, area);
 			s.slipping       = true;
 		}
 	}
@@ -150,8 +175,62 @@ inline JointPointResult updateJointPoint(JointPointState& s, const JointParams& 
 	r.shearTraction  = tau;
 	r.normalForce    = sn * area;
 	r.shearForce     = tau * area;
-	if (withEnergy) r.elasticEnergy = ((p.kn > 0 ? sn * sn / (2 * p.kn) : 0) + (p.ks > 0 ? tau * tau / (2 * p.ks) : 0)) * area;
+	if (withEnergy) r.elasticEnergy = detail::springEnergy(p, sn, tau, area);
 	return r;
+}
+
+/// One explicit step of the frictional points of one joint (broken or cohesionless: no cohesion, no
+/// tension), updated together. Two rigid blocks move relative to each other with the same tangential
+/// displacement all along their straight joint (SegmentKinematics: a relative rotation moves its points
+/// along the normal only), so the joint slips as a whole, by Coulomb's law for its resultant:
+///     |Σ a_k τ_k| <= tan(phi) Σ a_k sigma_n,k        (over the closed points, deltaN > 0).
+/// Beyond it every closed point's trial τ shifts by the same λ (a uniform plastic slip λ/ks: the
+/// return closest to the trial in the springs' energy). An open point carries nothing (rule 3).
+/// Capped point by point instead, a lightly loaded point slipped alone while the others stuck, and
+/// that partial slip of a rocking block fed a flutter: a block held by friction chattered and slid
+/// (issue 35). state(k) gives point k's JointPointState; r[k] its result (the dissipation of the
+/// joint, C·|λ|/ks, is shared out as τ_k a_k λ/ks, which can be negative at a point but sums right).
+template <class States>
+inline void updateFrictionalPoints(States&& state, int n, const JointParams& p, const Real* deltaN, const Real* dus, const Real* area, JointPointResult* r, bool withEnergy)
+{
+	Real resultant = 0, capacity = 0, closedArea = 0, before[kMaxIntegrationPoints];
+	for (int k = 0; k < n; k++) {
+		JointPointState& s      = state(k);
+		const bool       closed = deltaN[k] > 0;
+		before[k]               = s.shearTraction;
+		r[k]                    = JointPointResult {};
+		r[k].normalTraction     = closed ? p.kn * deltaN[k] : Real(0);
+		r[k].shearTraction      = closed ? s.shearTraction - p.ks * dus[k] : Real(0); // the trial
+		s.intact                = false;
+		s.open                  = !closed;
+		resultant += r[k].shearTraction * area[k];
+		capacity += r[k].normalTraction * p.tanPhi * area[k];
+		closedArea += closed ? area[k] : Real(0);
+	}
+	const Real excess = std::abs(resultant) - capacity;
+	const bool slips  = excess > 0 && closedArea > 0;
+	// frictionless (capacity 0): no shear at all, rather than a shear that sums to zero
+	const bool none   = slips && capacity == 0;
+	const Real shift  = slips ? std::copysign(excess / closedArea, resultant) : Real(0); // λ [Pa]
+	const Real slip   = (slips && p.ks > 0) ? shift / p.ks : Real(0);                    // λ/ks [m]
+	for (int k = 0; k < n; k++) {
+		JointPointState& s     = state(k);
+		const Real       a     = area[k];
+		const Real       trial = r[k].shearTraction;
+		const Real       tau   = (s.open || none) ? Real(0) : trial - shift;
+		s.shearTraction        = tau;
+		s.slipping             = slips && !s.open;
+		r[k].shearTraction     = tau;
+		r[k].normalForce       = r[k].normalTraction * a;
+		r[k].shearForce        = tau * a;
+		r[k].dissipated        = none ? Real(0) : tau * a * slip;
+		if (withEnergy) {
+			r[k].elasticEnergy = detail::springEnergy(p, r[k].normalTraction, tau, a);
+			// opened: its old shear spring goes; slipped: the return's loss beyond the friction's work
+			r[k].released = s.open ? detail::springEnergy(p, 0, before[k], a)
+			                       : slips ? detail::returnLoss(p, std::abs(none ? trial : shift), dus[k], a) : Real(0);
+		}
+	}
 }
 
 } // namespace rbsm

@@ -4,7 +4,8 @@ mode 'impact': two unit squares (frictionless, no gravity, no damping) approach 
 mode 'friction': a 1 x 0.5 block settles on a fixed floor (φ, g = 9.81, contact damping ξ), then is
   launched at v0 and slides to rest; returns the kinetic energy lost and the increments of the law's
   'plastDissip', 'viscDamp' and 'elastPotential' over the slide, the sliding distance and the largest
-  ratio |Ft|/|Fn| of the contact force on the block in the first 200 steps after the launch (the
+  ratio |Ft|/N of the contact force on the block to the springs' normal force N (RbsmPhys.normalForce)
+  in the first 200 steps after the launch (the
   damping ratio during the slide is xi_slide, default xi).
 Param ut: Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance (default 0, exact geometry)."""
 import os, sys
@@ -60,12 +61,12 @@ else:
     y0 = b.state.pos[1]
     law = O.engines[2].lawDispatcher.functors[0]
     law.dampingRatio = p.get("xi_slide", law.dampingRatio)
-    ratio, fz = 0.0, FrozenShare()  # largest |tangential| / normal contact force on the block
+    ratio, fz = 0.0, FrozenShare()  # largest |tangential contact force| / springs' normal force
     for k in range(200):
         O.step()
         fz.sample(O)
-        f = O.forces.f(b.id)
-        ratio = max(ratio, abs(f[0]) / max(abs(f[1]), 1e-300))
+        f, i = O.forces.f(b.id), O.interactions[0, b.id]
+        ratio = max(ratio, abs(f[0]) / max(i.phys.normalForce, 1e-300))  # over the springs' normal force
     O.run(p.get("steps", 30000) - 200, True)
     emit({"ke_lost": ke0 - kinetic_energy(O), "ke0": ke0, "ke_end": kinetic_energy(O),
           "d": {k: en(k) - e0[k] for k in e0}, "dist": b.state.pos[0] - x0, "mass": b.state.mass,

@@ -1,7 +1,7 @@
 """A random pile (issue 14): n random convex polygons (3-9 vertices, aspect 1-4, sizes log-uniform over
 a 100x range), random velocities and spins, dropped into a box of fixed blocks; engines() defaults, no
 contact damping. Samples the energy balance (O.trackEnergy) every `every` steps and reports the largest
-growth of the total energy against the work done by gravity, how many blocks left the box, NaNs and
+growth of the total energy against the work done by gravity and its drift at the end (drift), how many blocks left the box, NaNs and
 the step sizes used.
 params: seed, n (300), t_end (1 s), steps (cap), every, size_min (0.05), size_max (5), E (1e7), width (60), engines (kwargs)."""
 import os, sys, math, random
@@ -90,4 +90,4 @@ left = sum(1 for i in ids if not (-0.01 < O.bodies[i].state.pos[0] < W + 0.01 an
 vmax = max(math.hypot(O.bodies[i].state.vel[0], O.bodies[i].state.vel[1]) for i in ids) if finite else float("inf")
 emit({"worst_growth": worst, "grav_work": gw, "left": left, "finite": finite, "time": O.time, "iter": O.iter,
       "first_dt": ts.firstContactDt, "crit_dt": ts.criticalDt, "dt_min": min(dts) if dts else None, "dt_max": max(dts) if dts else None, "vmax": vmax,
-      "energy": {k: O.energy[k] for k in O.energy.keys()}, "top": top})
+      "energy": {k: O.energy[k] for k in O.energy.keys()}, "top": top, "drift": total() - E0 if E0 is not None else 0.0})
