@@ -37,3 +37,16 @@ def test_self_intersection_touching_vertex():
     # vertex 3 lies on edge 0: a pinched outline
     assert self_intersection([(0, 0), (2, 0), (2, 2), (1, 0), (0, 2)]) == (0, 2)
     assert self_intersection(SQUARE) is None
+
+
+@pytest.mark.parametrize("far", [1e6, 1e9, 1e12, 1e15])
+def test_far_from_the_origin(far):
+    """Issue 34, item 14: a valid 1 m block at (1e12, 1e12) was refused as "clockwise": its area, summed from
+    world coordinates, lost every digit to cancellation and came out with the wrong sign, so the ring was
+    reversed. The area is taken relative to the first vertex (geometry.signed_area)."""
+    ccw = [(far, far), (far + 1, far), (far + 1, far + 1), (far, far + 1)]
+    ring, reversed_ = block_outline(ccw, True, "block")
+    assert not reversed_ and ring == ccw
+    ring, reversed_ = block_outline(ccw[::-1], True, "block")
+    assert reversed_ and ring == ccw[::-1][::-1]
+    assert signed_area(ccw) == pytest.approx(1.0, rel=1e-12)

@@ -1,14 +1,15 @@
 """Checks that turn a drawn closed polyline into a block outline (pure Python, no YADE): closure,
 repeated vertices, self-intersection, orientation. Used by the DXF importer."""
 
-from ..geometry import polygon_area
+from ..geometry import signed_area as _relative_area
 
 __all__ = ["block_outline", "signed_area", "self_intersection"]
 
 
 def signed_area(pts):
-    """Shoelace area, > 0 for a counter-clockwise ring (geometry.polygon_area)."""
-    return polygon_area(pts)
+    """Shoelace area, > 0 for a counter-clockwise ring, relative to its first vertex (geometry.signed_area):
+    from world coordinates a 1 m block at (1e12, 1e12) lost every digit and its sign."""
+    return _relative_area(pts)
 
 
 def _orient(a, b, c):
