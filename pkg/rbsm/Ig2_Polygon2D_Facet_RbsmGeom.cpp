@@ -17,7 +17,7 @@ void Ig2_Polygon2D_Facet_RbsmGeom::postLoad(Ig2_Polygon2D_Facet_RbsmGeom&)
 }
 
 namespace {
-	std::atomic<int> periodicReports { 0 };
+	std::atomic<int> periodicReports { 0 }, planeReports { 0 };
 }
 
 bool Ig2_Polygon2D_Facet_RbsmGeom::go(
@@ -37,8 +37,16 @@ bool Ig2_Polygon2D_Facet_RbsmGeom::go(
 	Eigen::Vector3d world[3];
 	for (int i = 0; i < 3; i++)
 		world[i] = stateBoundary.pos + stateBoundary.ori * f.vertices[i];
+	// a facet lying in the blocks' plane has no trace there and would let the block through without a word
+	const Real z0 = stateBlock.pos.z();
+	if (world[0].z() == z0 && world[1].z() == z0 && world[2].z() == z0) {
+		rbsm_report::stopForPair(planeReports, *scene, "Ig2_Polygon2D_Facet_RbsmGeom", I->getId1(), I->getId2(),
+		                         "meet, but the Facet lies in the plane of the blocks and cannot hold them (stand it across the plane: "
+		                         "its trace on the plane is the boundary the blocks meet; or use a Wall with axis 0 or 1)");
+		return false;
+	}
 	rbsm::Vec2 a, b;
-	if (!rbsm::planeTrace(world, stateBlock.pos.z(), a, b)) return false; // the facet does not cross the block's plane
+	if (!rbsm::planeTrace(world, z0, a, b)) return false; // the facet does not cross the block's plane
 	// the trace's normal towards the block's centroid
 	const rbsm::Vec2 t = (b - a).normalized();
 	rbsm::Vec2       m(-t.y(), t.x());

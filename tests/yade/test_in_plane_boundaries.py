@@ -1,0 +1,52 @@
+"""Boundaries lying in the blocks' plane cannot hold them: said, not ignored (issue 34, item 4).
+
+A block resting on a YADE Facet that lies in the x-y plane (its normal along z, as utils.facet of three
+points at z = 0 gives) fell through it without a word, where a Wall with axis 2 (also in the plane) stops the
+run naming the pair. Both now stop the run with a message that names the bodies and the fix; the block has
+not fallen through when the run stops.
+"""
+import re
+
+from yaderun import run_yade, results
+
+SCENE = """
+from yade import O, utils, wrapper
+from yade_rbsm import polygon2d, mixed_engines, advance
+rock = wrapper.RbsmMat(density=2000)
+O.materials.append(rock)
+steel = wrapper.FrictMat(density=7800)
+O.materials.append(steel)
+b = O.bodies.append(polygon2d([(0, 0.01), (1, 0.01), (1, 0.51), (0, 0.51)], rock))
+if BOUNDARY == "facet":
+    O.bodies.append(utils.facet([(-5, -1, 0), (5, -1, 0), (0, 5, 0)], fixed=True, material=steel))
+else:
+    O.bodies.append(utils.wall((0, 0, 0), axis=2, material=steel))
+O.engines = mixed_engines(gravity=(0, -9.81, 0))
+try:
+    advance(2000)
+    stopped = False
+except RuntimeError:
+    stopped = True
+report(stopped=stopped, y=O.bodies[b].state.pos[1], iter=O.iter)
+"""
+
+
+def _run(boundary):
+    p = run_yade("BOUNDARY = %r\n" % boundary + SCENE)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    (r,) = results(p)
+    return r, p.stdout + p.stderr
+
+
+def test_facet_in_the_plane_stops_the_run():
+    r, out = _run("facet")
+    print(r, [l for l in out.splitlines() if "yade-rbsm" in l][:3])
+    assert r["stopped"] and r["y"] > 0.2, r
+    assert re.search(r"#0.*#1|#1.*#0", out) and "Facet" in out and "plane of the blocks" in out
+
+
+def test_wall_in_the_plane_stops_the_run():
+    r, out = _run("wall")
+    print(r, [l for l in out.splitlines() if "yade-rbsm" in l][:3])
+    assert r["stopped"] and r["y"] > 0.2, r
+    assert "axis" in out and "plane of the blocks" in out
