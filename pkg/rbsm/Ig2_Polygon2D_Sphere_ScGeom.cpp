@@ -12,7 +12,7 @@ namespace yade {
 YADE_PLUGIN((Ig2_Polygon2D_Sphere_ScGeom));
 
 namespace {
-	std::atomic<int> periodicReports { 0 }, materialReports { 0 };
+	std::atomic<int> periodicReports { 0 }, materialReports { 0 }, planeReports { 0 };
 }
 
 bool Ig2_Polygon2D_Sphere_ScGeom::go(
@@ -36,6 +36,14 @@ bool Ig2_Polygon2D_Sphere_ScGeom::go(
 
 	const bool isNew = !I->geom;
 	if (isNew && c.overlap < 0 && !force) return false;
+	// the blocks move in their plane: a sphere free in z or tilting about x, y drifts out of it, silently
+	constexpr unsigned planar = State::DOF_Z | State::DOF_RX | State::DOF_RY;
+	if (isNew && (state2.blockedDOFs & planar) != planar) {
+		rbsm_report::stopForPair(planeReports, *scene, "Ig2_Polygon2D_Sphere_ScGeom", I->getId1(), I->getId2(),
+		                         "meet, but the sphere is free to leave the plane of the blocks (a sphere next to Polygon2D blocks "
+		                         "moves in their plane: set its state.blockedDOFs = 'zXY')");
+		return false;
+	}
 	if (isNew && !rbsm_mixed::materialsAccepted(materialReports, *scene, "Ig2_Polygon2D_Sphere_ScGeom", *I, rbsm_mixed::Role::Block, rbsm_mixed::Role::Grain))
 		return false;
 	if (isNew) I->geom = boost::static_pointer_cast<ScGeom>(ClassFactory::instance().createShared("ScGeom")); // Debian's constructor

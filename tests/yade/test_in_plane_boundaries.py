@@ -1,4 +1,5 @@
-"""Boundaries lying in the blocks' plane cannot hold them: said, not ignored (issue 34, item 4).
+"""Boundaries lying in the blocks' plane cannot hold them: said, not ignored (issue 34, item 4); and a
+sphere free to leave the plane is said too (item 5).
 
 A block resting on a YADE Facet that lies in the x-y plane (its normal along z, as utils.facet of three
 points at z = 0 gives) fell through it without a word, where a Wall with axis 2 (also in the plane) stops the
@@ -50,3 +51,40 @@ def test_wall_in_the_plane_stops_the_run():
     print(r, [l for l in out.splitlines() if "yade-rbsm" in l][:3])
     assert r["stopped"] and r["y"] > 0.2, r
     assert "axis" in out and "plane of the blocks" in out
+
+
+SPHERE = """
+from yade import O, utils, wrapper
+from yade_rbsm import polygon2d, mixed_engines, advance
+rock = wrapper.RbsmMat(density=2000)
+O.materials.append(rock)
+sand = wrapper.FrictMat(density=2000)
+O.materials.append(sand)
+O.bodies.append(polygon2d([(-2, -1), (2, -1), (2, 0), (-2, 0)], rock, fixed=True))
+s = utils.sphere((0, 0.2, 0), 0.2, material=sand)
+if DOFS is not None:
+    s.state.blockedDOFs = DOFS
+sid = O.bodies.append(s)
+O.engines = mixed_engines(gravity=(0, -9.81, 0))
+try:
+    advance(3000)
+    stopped = False
+except RuntimeError:
+    stopped = True
+report(stopped=stopped, y=O.bodies[sid].state.pos[1], z=O.bodies[sid].state.pos[2])
+"""
+
+
+def test_sphere_free_to_leave_the_plane_stops_the_run():
+    """Item 5: a sphere next to blocks without blockedDOFs 'zXY' left their plane (z = 0.77 m) without a word.
+    It is stopped where it first meets a block, naming both; with 'zXY' it rests on the block."""
+    p = run_yade("DOFS = None\n" + SPHERE)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    (r,) = results(p)
+    out = p.stdout + p.stderr
+    print(r, [l for l in out.splitlines() if "yade-rbsm" in l][:2])
+    assert r["stopped"] and "blockedDOFs = 'zXY'" in out and re.search(r"#0 and #1", out)
+    p = run_yade("DOFS = 'zXY'\n" + SPHERE)
+    (r,) = results(p)
+    print(r)
+    assert not r["stopped"] and r["z"] == 0 and abs(r["y"] - 0.2) < 0.01
