@@ -10,6 +10,17 @@ import re
 
 from yaderun import run_yade, results
 
+# run 3000 steps (or until the plugin stops the run) and report body b's position
+RUN = """
+O.engines = mixed_engines(gravity=(0, -9.81, 0))
+try:
+    advance(3000)
+    stopped = False
+except RuntimeError:
+    stopped = True
+report(stopped=stopped, y=O.bodies[b].state.pos[1], z=O.bodies[b].state.pos[2])
+"""
+
 SCENE = """
 from yade import O, utils, wrapper
 from yade_rbsm import polygon2d, mixed_engines, advance
@@ -22,14 +33,7 @@ if BOUNDARY == "facet":
     O.bodies.append(utils.facet([(-5, -1, 0), (5, -1, 0), (0, 5, 0)], fixed=True, material=steel))
 else:
     O.bodies.append(utils.wall((0, 0, 0), axis=2, material=steel))
-O.engines = mixed_engines(gravity=(0, -9.81, 0))
-try:
-    advance(2000)
-    stopped = False
-except RuntimeError:
-    stopped = True
-report(stopped=stopped, y=O.bodies[b].state.pos[1], iter=O.iter)
-"""
+""" + RUN
 
 
 def _run(boundary):
@@ -64,15 +68,8 @@ O.bodies.append(polygon2d([(-2, -1), (2, -1), (2, 0), (-2, 0)], rock, fixed=True
 s = utils.sphere((0, 0.2, 0), 0.2, material=sand)
 if DOFS is not None:
     s.state.blockedDOFs = DOFS
-sid = O.bodies.append(s)
-O.engines = mixed_engines(gravity=(0, -9.81, 0))
-try:
-    advance(3000)
-    stopped = False
-except RuntimeError:
-    stopped = True
-report(stopped=stopped, y=O.bodies[sid].state.pos[1], z=O.bodies[sid].state.pos[2])
-"""
+b = O.bodies.append(s)
+""" + RUN
 
 
 def test_sphere_free_to_leave_the_plane_stops_the_run():
