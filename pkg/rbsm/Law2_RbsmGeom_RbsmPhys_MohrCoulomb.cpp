@@ -28,13 +28,13 @@ namespace {
 }
 
 namespace {
-	// The springs' energy of the points as they were at the last step, on a segment of that length [J].
-	Real storedEnergy(const RbsmPhys& p, const RbsmGeom& g, Real length, int n)
+	// The springs' energy of the points as they were at the last step (on its length, contactLength) [J].
+	Real storedEnergy(const RbsmPhys& p, const RbsmGeom& g, int n)
 	{
 		const rbsm::JointParams params { p.kn, p.ks };
 		Real                    e = 0;
 		for (int k = 0; k < n; k++)
-			e += rbsm::detail::springEnergy(params, p.point(k).normalTraction, p.point(k).joint.shearTraction, g.rule->w[k] * length * g.thickness);
+			e += rbsm::detail::springEnergy(params, p.point(k).normalTraction, p.point(k).joint.shearTraction, g.rule->w[k] * p.contactLength * g.thickness);
 		return e;
 	}
 
@@ -202,7 +202,7 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		return false; // YADE erases the interaction; the contact is made again, with Ip2's joint
 	}
 	if (g.lost) {
-		if (scene->trackEnergy) scene->energy->add(storedEnergy(p, g, p.contactLength, n), "jointRelease", jointReleaseIx, /*cumulative*/ false);
+		if (scene->trackEnergy) scene->energy->add(storedEnergy(p, g, n), "jointRelease", jointReleaseIx, /*cumulative*/ false);
 		loseJoint(p, n);
 		return false;
 	}
