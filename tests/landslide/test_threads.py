@@ -2,12 +2,13 @@
 
 With two threads YADE sums the joint forces of a block in another order, and the undamped 300-step probe that
 finds the surface of slipping joints amplifies round-off: on 027abd9 the -j2 run printed "the slipping surface
-is a single point" where -j1 found it. Asserted: both runs find a surface, and the figures read on it agree
-within a stated tolerance. The probe is chaotic and OpenMP's order changes from run to run, so -j2 is not even
-repeatable: 13 runs at -j2 found 13-14 joints, 13.59-14.98 m (-j1: 13, 14.50 m), the RBSM factor of safety on
-them 0.759-0.768 (-j1 0.759) and Fellenius 0.825-0.835 (-j1 0.825), where the toe's first joint differs. So:
-both factors within 2.5 %, the length within 12 % (twice the spread); Table 2 on the given slip polyline the
-same to the printed digit (it is read from the settled state, before the probe).
+is a single point" where -j1 found it. On bc042d0 the probe took every joint that slipped at some check (about
+190 of them, most by chatter that round-off switches on and off): 12 runs at -j2 found four surfaces, 13.59 to
+15.30 m, with RBSM factors of safety 0.707 to 0.767 (-j1 0.759), and CI drew the 0.707 one. The probe now keeps
+the joints that dissipated at least a tenth of the most any joint did (eleven joints carry 94 % of the energy,
+in the same order at -j1 and -j2): 10 runs gave 10.87-10.88 m and 0.722-0.723. Asserted over one -j1 and four
+-j2 runs: the same number of joints, the length within 1 %, both factors within 1 % (half the old spread's
+smallest step), Table 2 on the given slip polyline the same to the printed digit (read before the probe).
 """
 import os
 import re
@@ -31,14 +32,18 @@ def _run(threads, tmp):
         assert m, "row %r missing at -j%d" % (label, threads)
         return float(m.group(1))
 
-    return {"length": float(surface.group(2)), "rbsm": row("RBSM contact forces, found surface"),
+    return {"joints": int(surface.group(1)), "length": float(surface.group(2)), "rbsm": row("RBSM contact forces, found surface"),
             "fellenius": row("Fellenius, found surface"), "table2": row("RBSM contact forces, slip polyline")}
 
 
 def test_found_surface_at_one_and_two_threads(tmp_path):
-    r1, r2 = _run(1, tmp_path), _run(2, tmp_path)
-    print("-j1", r1, "\n-j2", r2)
-    assert r2["table2"] == r1["table2"]
-    assert r2["rbsm"] == pytest.approx(r1["rbsm"], rel=0.025)
-    assert r2["fellenius"] == pytest.approx(r1["fellenius"], rel=0.025)
-    assert r2["length"] == pytest.approx(r1["length"], rel=0.12)
+    r1 = _run(1, tmp_path)
+    print("-j1", r1)
+    for _ in range(4):  # OpenMP's order changes from run to run: several draws
+        r2 = _run(2, tmp_path)
+        print("-j2", r2)
+        assert r2["table2"] == r1["table2"]
+        assert r2["joints"] == r1["joints"]
+        assert r2["length"] == pytest.approx(r1["length"], rel=0.01)
+        assert r2["rbsm"] == pytest.approx(r1["rbsm"], rel=0.01)
+        assert r2["fellenius"] == pytest.approx(r1["fellenius"], rel=0.01)
