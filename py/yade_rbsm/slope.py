@@ -60,9 +60,9 @@ _geometry = _sibling("geometry")
     _geometry.monotone, _geometry.interp_y, _geometry.point_segment_distance)
 _interp_y = interp_y  # the name safety.py and tests used
 
-__all__ = ["Block", "SlopeBlocks", "brick_blocks", "column_blocks", "voronoi_slope_blocks", "slope_polygon",
+__all__ = ["Block", "SlopeBlocks", "JointSet", "Trace", "jointset_blocks", "brick_blocks", "column_blocks", "voronoi_slope_blocks", "slope_polygon",
            "cut_polygons", "polygon_area", "region_area", "check_polygon", "build_scene", "bond_and_break",
-           "break_crack", "joints_on", "break_joints", "set_joint_strength", "joint_sets", "apply_joint_sets",
+           "break_crack", "joints_on", "break_joints", "set_joint_strength", "give_joint_sets", "joint_sets", "apply_joint_sets",
            "unbalanced_ratio", "settle"]
 
 
@@ -443,7 +443,16 @@ def _meets_region(line, surf, base):
 
 # the scene part (needs YADE) lives in slope_scene.py; its names stay importable from here
 _scene = _sibling("slope_scene")
-(build_scene, break_crack, joints_on, break_joints, set_joint_strength, joint_sets, apply_joint_sets, bond_and_break,
- unbalanced_ratio, settle) = (
+(build_scene, break_crack, joints_on, break_joints, set_joint_strength, give_joint_sets, joint_sets, apply_joint_sets,
+ bond_and_break, unbalanced_ratio, settle) = (
     _scene.build_scene, _scene.break_crack, _scene.joints_on, _scene.break_joints, _scene.set_joint_strength,
+    _scene.give_joint_sets,
     _scene.joint_sets, _scene.apply_joint_sets, _scene.bond_and_break, _scene.unbalanced_ratio, _scene.settle)
+
+
+def __getattr__(name):
+    """The joint-set builder (joint_sets.py: JointSet, Trace, jointset_blocks), loaded when first used."""
+    if name in ("JointSet", "Trace", "jointset_blocks"):
+        from . import joint_sets
+        return getattr(joint_sets, name)
+    raise AttributeError("module %r has no attribute %r" % (__name__, name))

@@ -6,7 +6,7 @@ import json
 import math
 import numbers
 
-__all__ = ["build_scene", "break_crack", "joints_on", "break_joints", "set_joint_strength", "joint_sets",
+__all__ = ["build_scene", "break_crack", "joints_on", "break_joints", "set_joint_strength", "give_joint_sets", "joint_sets",
            "apply_joint_sets", "bond_and_break", "unbalanced_ratio", "settle"]
 
 
@@ -317,9 +317,13 @@ def apply_joint_sets(F=1.0, reduce_tensile=False, sets=None):
                for js in (joint_sets() if sets is None else sets))
 
 
-def bond_and_break(sb):
+def bond_and_break(sb, give_sets=True):
     """Bond every initial joint (ip2.setCohesionNow for the first step), take that step, then break
-    the joints of the crack (``sb.crack``) and of the crack polylines (``sb.cracks``). Returns
+    the joints of the crack (``sb.crack``) and of the crack polylines (``sb.cracks``), and give the
+    joint sets and traces of :func:`slope.jointset_blocks` their strength (:func:`give_joint_sets`;
+    with *give_sets* False they keep the rock's through the gravity stage, UDEC's practice of an elastic
+    equilibrium first: call give_joint_sets(sb) after :func:`settle`; a wedge held by cohesion slides
+    while gravity comes on at once and its normal force builds up). Returns
     (number of joints, number broken). Under yade.mpy call it on every rank after
     yade_rbsm.mpi.distribute() (the step is then distributed, each rank bonds and breaks its joints,
     and the counts are of the whole scene)."""
@@ -334,9 +338,37 @@ def bond_and_break(sb):
     _record_cuts(list(sb.joints) + list(sb.cracks) + [t for t, _ in sb.layers if t is not None])  # (the layers' tops cut too)
     nj = sum(1 for I in O.interactions if I.isReal and counted(I))
     nb = break_crack(sb, counted=counted) + break_joints(sb.cracks, counted=counted)
+    if give_sets:
+        give_joint_sets(sb)
     if mpi.is_split():
         nj, nb = (int(v) for v in mpi.allreduce_sum([nj, nb]))
     return nj, nb
+
+
+def give_joint_sets(sb):
+    """The strength of the joint sets and traces of :func:`slope.jointset_blocks` to their joints, once
+    bonded (:func:`bond_and_break` does it unless told not to): :func:`set_joint_strength` with the block
+    edges each set kept, so that the sets are kept with the scene as any set_joint_strength's. A set
+    without a friction angle takes the rock's: the least tan(phi) its joints got from their blocks'
+    materials. Returns the number of joints given a set's strength."""
+    n = 0
+    from . import mpi
+    for sc in getattr(sb, "joint_sets", ()):
+        src = sc.source
+        if not sc.segments:
+            continue
+        polylines = [list(e) for e in sc.segments]
+        if src.friction_angle is not None:
+            phi = math.radians(src.friction_angle)
+        else:
+            tans = [I.phys.tanPhi for I in joints_on(polylines)]
+            t = min(tans) if tans else float("inf")
+            if mpi.is_split():
+                t = min(mpi.distributed().comm.allgather(t))
+            phi = math.atan(t)
+        n += set_joint_strength(polylines, src.cohesion, phi, tensile_strength=src.tensile_strength, ductile=src.ductile,
+                                normal_stiffness=src.kn, shear_stiffness=src.ks)
+    return n
 
 
 def unbalanced_ratio(ids=None, gravity=None):

@@ -170,3 +170,14 @@ def test_a_block_erased_from_a_cut_leaves_the_others_found():
     r = result_of("cut_erased.py")
     assert r["before"] > 10 and 1 <= r["lost"] <= 2, r
     assert r["after"] == r["before"] - r["lost"] and r["set"] == r["after"], r
+
+
+def test_joint_set_cutter_gives_hoek_and_bray_plane_failure():
+    """jointset_plane.py: the slope of joint_set_plane.py built by slope.jointset_blocks from the outline and
+    two traces that carry their strength (issue 36); no set_joint_strength: give_joint_sets after the gravity
+    stage. Measured: FS 1.4827 against Hoek & Bray's 1.4818."""
+    r = result_of("jointset_plane.py")
+    assert r["given"] == 2 and r["blocks"] == 4 and r["welds"] == 2, r
+    assert r["on"]["bedding"] == [[20e3, pytest.approx(math.tan(math.radians(30)))]], r
+    assert r["on"]["crack"] == [[0.0, pytest.approx(math.tan(math.radians(20)))]], r
+    assert r["fs"] == pytest.approx(r["closed"], rel=0.01), r

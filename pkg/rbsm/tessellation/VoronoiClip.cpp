@@ -1,17 +1,16 @@
 #include <pkg/rbsm/tessellation/VoronoiClip.hpp>
 
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
+#include <pkg/rbsm/tessellation/ExactPieces.hpp>
 
 #include <CGAL/Boolean_set_operations_2.h>
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Partition_traits_2.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_set_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/partition_2.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,7 +25,10 @@ namespace rbsm {
 namespace tess {
 
 namespace {
-	using K      = CGAL::Exact_predicates_exact_constructions_kernel; // exact constructions (rationals)
+	using exact::convexPieces;
+	using exact::dropStraight;
+	using exact::where;
+	using K      = exact::K; // exact constructions (rationals)
 	using Ki     = CGAL::Exact_predicates_inexact_constructions_kernel; // exact predicates on doubles
 	using P2     = K::Point_2;
 	using Poly   = CGAL::Polygon_2<K>;
@@ -39,9 +41,6 @@ namespace {
 	using Vb = CGAL::Triangulation_vertex_base_with_info_2<SiteInfo, K>;
 	using Tds = CGAL::Triangulation_data_structure_2<Vb>;
 	using DT  = CGAL::Delaunay_triangulation_2<K, Tds>;
-
-	using PT       = CGAL::Partition_traits_2<K>;
-	using PartPoly = PT::Polygon_2;
 
 	bool finite(const Point& p) { return std::isfinite(p[0]) && std::isfinite(p[1]); }
 
@@ -59,76 +58,6 @@ namespace {
 		return p;
 	}
 
-	// The exact rational rounded to double (never the interval approximation, which depends on how
-	// the point was constructed): equal exact points give equal doubles.
-	Point round(const P2& p) { return {CGAL::to_double(p.x().exact()), CGAL::to_double(p.y().exact())}; }
-
-	// Removes vertices where the boundary goes straight on (exact test).
-	template <class Pts>
-	std::vector<P2> dropStraight(const Pts& in)
-	{
-		std::vector<P2> v(in.begin(), in.end());
-		bool changed = true;
-		while (changed && v.size() >= 3) {
-			changed = false;
-			for (std::size_t i = 0; i < v.size() && v.size() >= 3; ++i) {
-				const P2& a = v[(i + v.size() - 1) % v.size()];
-				const P2& b = v[(i + 1) % v.size()];
-				if (v[i] == a || CGAL::collinear(a, v[i], b)) {
-					v.erase(v.begin() + i);
-					changed = true;
-					break;
-				}
-			}
-		}
-		return v;
-	}
-
-	template <class Pts>
-	bool hasStraight(const Pts& in)
-	{
-		std::vector<P2> v(in.begin(), in.end());
-		for (std::size_t i = 0; i < v.size(); ++i)
-			if (CGAL::collinear(v[(i + v.size() - 1) % v.size()], v[i], v[(i + 1) % v.size()])) return true;
-		return false;
-	}
-
-	// Convex pieces of a simple counter-clockwise polygon without straight vertices: itself if convex,
-	// else a convex partition (diagonals between existing vertices) whose pieces have no vertex where
-	// the boundary goes straight on (Polygon2D refuses those): CGAL's optimal partition first, then
-	// its approximate ones.
-	std::vector<std::vector<P2>> convexPieces(const std::vector<P2>& v, bool& split)
-	{
-		Poly poly(v.begin(), v.end());
-		split = false;
-		if (poly.is_convex()) return {v};
-		split = true;
-		for (int method = 0; method < 3; ++method) {
-			std::list<PartPoly> parts;
-			if (method == 0) CGAL::optimal_convex_partition_2(v.begin(), v.end(), std::back_inserter(parts));
-			else if (method == 1) CGAL::approx_convex_partition_2(v.begin(), v.end(), std::back_inserter(parts));
-			else CGAL::greene_approx_convex_partition_2(v.begin(), v.end(), std::back_inserter(parts));
-			bool ok = true;
-			for (const auto& p : parts) ok = ok && !hasStraight(p.container());
-			if (ok || method == 2) {
-				std::vector<std::vector<P2>> out;
-				// Last resort: drop the straight vertex (the neighbour across keeps it: a T-junction).
-				for (const auto& p : parts) out.push_back(ok ? std::vector<P2>(p.vertices_begin(), p.vertices_end()) : dropStraight(p.container()));
-				return out;
-			}
-		}
-		return {};
-	}
-
-	std::string where(const Polygon& v)
-	{
-		std::ostringstream o;
-		o.precision(17);
-		o << "[";
-		for (std::size_t i = 0; i < v.size(); ++i) o << (i ? ", " : "") << "(" << v[i][0] << ", " << v[i][1] << ")";
-		o << "]";
-		return o.str();
-	}
 } // namespace
 
 std::string regionProblem(const Polygon& region)
@@ -266,7 +195,7 @@ namespace {
 			for (const auto& ph : clipped) {
 				if (ph.number_of_holes() != 0) throw std::logic_error("voronoiClip: a clipped cell has a hole");
 				// 3. straight vertices (collinear vertices of the region's outline) out
-				std::vector<P2> v3 = dropStraight(ph.outer_boundary().container());
+				std::vector<P2> v3 = dropStraight({ph.outer_boundary().vertices_begin(), ph.outer_boundary().vertices_end()});
 				if (v3.size() < 3) continue;
 				Poly p3(v3.begin(), v3.end());
 				if (!p3.is_simple()) {
@@ -287,15 +216,9 @@ namespace {
 	// 5. one rounding per exact point; then the check Polygon2D makes: blocks (or dropped) into out.
 	void roundPieces(const std::vector<std::pair<int, std::vector<P2>>>& pieces, double minArea, Tessellation& out)
 	{
-		std::map<P2, Point> rounded; // P2 ordered lexicographically (exact comparison)
+		exact::Rounder rounded;
 		for (const auto& pc : pieces) {
-			Polygon poly;
-			for (const auto& p : pc.second) {
-				auto it = rounded.find(p);
-				if (it == rounded.end()) it = rounded.emplace(p, round(p)).first;
-				if (poly.empty() || poly.back() != it->second) poly.push_back(it->second);
-			}
-			while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+			Polygon poly = rounded.polygon(pc.second);
 			std::vector<Vec2> ev;
 			for (const auto& p : poly) ev.emplace_back(p[0], p[1]);
 			const double area = CGAL::to_double(Poly(pc.second.begin(), pc.second.end()).area().exact());

@@ -2,6 +2,7 @@
 // used by py/yade_rbsm/voronoi.py (the documented Python API). Polygons are lists of (x, y).
 // std::invalid_argument becomes ValueError, other std::exception RuntimeError (boost::python).
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
+#include <pkg/rbsm/tessellation/TraceCut.hpp>
 #include <pkg/rbsm/tessellation/VoronoiClip.hpp>
 
 #include <boost/python.hpp>
@@ -76,6 +77,31 @@ py::str polygonProblemPy(const py::object& poly)
 	return py::str(rbsm::polygonProblem(v));
 }
 
+py::dict cutByTracesPy(const py::object& region, const py::object& traces, double minArea)
+{
+	std::vector<Segment> segs;
+	const long n = py::len(traces);
+	for (long i = 0; i < n; ++i) {
+		const Polygon s = toPolygon(traces[i]);
+		if (s.size() != 2) throw std::invalid_argument("a trace must be a pair of points ((x0, y0), (x1, y1))");
+		segs.push_back({s[0], s[1]});
+	}
+	const TraceCut t = cutByTraces(toPolygon(region), segs, minArea);
+	py::list blocks, welds;
+	for (const auto& b : t.blocks) blocks.append(fromPolygon(b));
+	for (const auto& w : t.welds) welds.append(fromPolygon({w[0], w[1]}));
+	py::dict d;
+	d["blocks"] = blocks;
+	d["welds"]  = welds;
+	d["faces"]  = t.faces;
+	d["split"]  = t.split;
+	d["merged"] = fromPolygon(t.mergedAt);
+	d["merged_area"] = t.mergedArea;
+	d["kept_slivers"] = fromPolygon(t.kept);
+	d["kept_area"] = t.keptArea;
+	return d;
+}
+
 } // namespace
 
 BOOST_PYTHON_MODULE(yade_rbsm_tessellation)
@@ -88,6 +114,9 @@ BOOST_PYTHON_MODULE(yade_rbsm_tessellation)
 	        "n sites uniform inside region from std::mt19937_64(seed); dart throwing with min_distance > 0.");
 	py::def("voronoi_clip", voronoiClipPy, (py::arg("region"), py::arg("sites"), py::arg("min_area") = 0.0),
 	        "Voronoi cells of sites clipped to region, cut into convex CCW blocks: dict(blocks, site, cells, split, dropped, dropped_area).");
+	py::def("cut_by_traces", cutByTracesPy, (py::arg("region"), py::arg("traces"), py::arg("min_area") = 0.0),
+	        "region cut along the traces (segments) into convex CCW blocks, exactly; traces that do not separate blocks are "
+	        "removed (UDEC's rule); faces below min_area merged into a neighbour (convex union): dict(blocks, welds (diagonals cutting non-convex faces), faces, split, merged (sliver places), merged_area, kept_slivers, kept_area).");
 	py::def("union_area", unionAreaPy, py::arg("polygons"), "Area of the union of simple polygons (exact, then rounded).");
 	py::def("polygon_problem", polygonProblemPy, py::arg("polygon"),
 	        "'' if Polygon2D accepts the vertices (convex, CCW, no repeated or collinear vertex), else the problem.");

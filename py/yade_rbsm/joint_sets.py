@@ -1,0 +1,341 @@
+"""Joint sets and the cutter that turns a slope outline and its joints into blocks (UDEC's ``jset``).
+
+A :class:`JointSet` is data: the geometry of parallel joints (dip, spacing, origin, persistence as
+trace length and gap, an optional random spread) and their strength and stiffness.
+:func:`jointset_blocks` cuts any simple outline (the region under a ground polyline, or a polygon of
+your own, non-convex included: a bench, an overhang) by the sets' traces and by given traces, with
+CGAL in exact arithmetic (``pkg/rbsm/tessellation/TraceCut.hpp``):
+
+* a trace that does not separate two blocks (the end of a non-persistent joint, inside rock) is
+  removed, as UDEC does: a joint is a joint only where it cuts a block apart; the length kept of
+  each set is reported;
+* the faces the traces leave are cut into convex blocks by diagonals between their corners where the
+  outline is non-convex; these cuts are *welds* (no joint of the rock mass: they are bonded with the
+  rock's strength, and reported as such), never a joint through the whole model;
+* slivers (area below ``min_area``) are merged into a neighbour: across their longest inner edge
+  whose removal leaves a convex block; the count, the places and the area are reported; a sliver that
+  no neighbour takes convexly stays a block, reported;
+* every vertex is an exact point rounded once, so blocks on either side of a joint share it bit for bit.
+
+The result is a :class:`yade_rbsm.slope.SlopeBlocks` like the other builders' (``blocks``,
+``slope_area``, ``dropped_area`` = 0: the blocks tile the outline), with ``joint_sets`` (what each
+set kept) and ``welds``; :func:`yade_rbsm.slope.bond_and_break` gives every set its strength, so
+that ``set_joint_strength`` is not needed, and the sets stay with the scene (``O.tags``) for
+strength reduction and contacts made later along them.
+
+Pure Python apart from the compiled cutter; it imports without YADE.
+"""
+import math
+import random
+from dataclasses import dataclass, field
+from typing import List, Optional, Sequence, Tuple
+
+from .checks import count, number
+
+__all__ = ["JointSet", "Trace", "SetCut", "jointset_blocks", "set_traces"]
+
+
+@dataclass
+class JointSet:
+    """A set of parallel joints, as UDEC's ``jset``.
+
+    Geometry: *dip* [deg] counter-clockwise from +x (a set dipping 20 deg towards +x, out of a face
+    that looks to +x, has dip = -20; 0 and 180 are the same set); *spacing* [m] normal to the joints;
+    *origin* a point on one joint of the set; *trace* [m] the length of each joint along its line and
+    *gap* [m] the rock bridge between two joints of one line (*trace* None: fully persistent);
+    *dip_spread* [deg] and *spacing_spread* (a fraction of the spacing) the standard deviations of a
+    random spread drawn from *seed* (normal, the spacing kept above a tenth of its mean).
+
+    Strength and stiffness of the joints: *cohesion* [Pa], *friction_angle* [deg] (None: the rock's,
+    ``RbsmMat.frictionAngle``), *tensile_strength* [Pa], *kn*, *ks* [Pa/m] (None: the blocks' Kawai
+    springs), *ductile* (None: the blocks'). A set is a discontinuity: by default it has no cohesion
+    and no tensile strength. *name* addresses the set in reports (default ``set A``, ``set B``, ...)."""
+    dip: float
+    spacing: float
+    origin: Tuple[float, float] = (0.0, 0.0)
+    trace: Optional[float] = None
+    gap: float = 0.0
+    dip_spread: float = 0.0
+    spacing_spread: float = 0.0
+    seed: int = 0
+    cohesion: float = 0.0
+    friction_angle: Optional[float] = None
+    tensile_strength: float = 0.0
+    kn: Optional[float] = None
+    ks: Optional[float] = None
+    ductile: Optional[bool] = None
+    name: Optional[str] = None
+
+    def __post_init__(self):
+        who = "JointSet"
+        self.dip = number(who, "dip", self.dip, -360, 360)
+        self.spacing = number(who, "spacing", self.spacing, 0, low_open=True)
+        try:
+            ox, oy = self.origin
+        except (TypeError, ValueError):
+            raise ValueError("%s: origin must be a point (x, y) (got %r)" % (who, self.origin)) from None
+        self.origin = (number(who, "origin x", ox), number(who, "origin y", oy))
+        if self.trace is not None:
+            self.trace = number(who, "trace", self.trace, 0, low_open=True)
+        self.gap = number(who, "gap", self.gap, 0)
+        if self.gap > 0 and self.trace is None:
+            raise ValueError("%s: a gap (%g m) needs a trace length: trace=None is a fully persistent set" % (who, self.gap))
+        self.dip_spread = number(who, "dip_spread", self.dip_spread, 0, 45)
+        self.spacing_spread = number(who, "spacing_spread", self.spacing_spread, 0, 1)
+        self.seed = count(who, "seed", self.seed, 0)
+        _check_strength(self, who)
+
+
+@dataclass
+class Trace:
+    """One given joint trace (a fault, a mapped joint): a polyline *points* with the strength fields
+    of :class:`JointSet` (a trace given as a bare polyline takes the defaults: no cohesion, no
+    tensile strength, the rock's friction)."""
+    points: Sequence[Tuple[float, float]]
+    cohesion: float = 0.0
+    friction_angle: Optional[float] = None
+    tensile_strength: float = 0.0
+    kn: Optional[float] = None
+    ks: Optional[float] = None
+    ductile: Optional[bool] = None
+    name: Optional[str] = None
+
+    def __post_init__(self):
+        from .geometry import points
+        self.points = points("Trace: points", self.points, 2)
+        _check_strength(self, "Trace")
+
+
+def _check_strength(s, who):
+    s.cohesion = number(who, "cohesion", s.cohesion, 0)
+    if s.friction_angle is not None:
+        s.friction_angle = number(who, "friction_angle (degrees)", s.friction_angle, 0, 90, high_open=True)
+    s.tensile_strength = number(who, "tensile_strength", s.tensile_strength, 0)
+    for name in ("kn", "ks"):
+        if getattr(s, name) is not None:
+            setattr(s, name, number(who, name, getattr(s, name), 0, low_open=True))
+    if s.ductile is not None and not isinstance(s.ductile, bool):
+        raise ValueError("%s: ductile must be True, False or None (the blocks'), got %r" % (who, s.ductile))
+
+
+@dataclass
+class SetCut:
+    """What one set or trace became in the blocks: *segments* the block edges on it (an edge of the
+    block on either side), *length* [m] the length of joint it makes, *given* [m] the length of its
+    traces inside the outline (less is kept where a trace ends inside rock)."""
+    source: object  # the JointSet or Trace
+    name: str
+    segments: List[Tuple[Tuple[float, float], Tuple[float, float]]] = field(default_factory=list)
+    length: float = 0.0
+    given: float = 0.0
+
+    def __repr__(self):
+        return "SetCut(%r: %.4g m of joint, %.4g m of trace given inside the outline)" % (self.name, self.length, self.given)
+
+
+def set_traces(js, bbox):
+    """The traces of the JointSet *js* over the box ``(xmin, ymin, xmax, ymax)``: a list of segments
+    ((x0, y0), (x1, y1)), reaching past the box."""
+    xmin, ymin, xmax, ymax = bbox
+    rng = random.Random(js.seed)
+    diag = math.hypot(xmax - xmin, ymax - ymin)
+    cx, cy = 0.5 * (xmin + xmax), 0.5 * (ymin + ymax)
+    a = math.radians(js.dip)
+    d = (math.cos(a), math.sin(a))
+    nrm = (-d[1], d[0])
+    corners = [(xmin, ymin), (xmax, ymin), (xmax, ymax), (xmin, ymax)]
+    off = [(p[0] - js.origin[0]) * nrm[0] + (p[1] - js.origin[1]) * nrm[1] for p in corners]
+    lo, hi = min(off) - 0.5 * diag * math.sin(math.radians(3 * js.dip_spread)), max(off) + 0.5 * diag * math.sin(math.radians(3 * js.dip_spread))
+
+    def step():
+        if js.spacing_spread == 0:
+            return js.spacing
+        return js.spacing * max(0.1, rng.gauss(1.0, js.spacing_spread))
+    offsets = [0.0]
+    while offsets[-1] < hi:
+        offsets.append(offsets[-1] + step())
+    below = [0.0]
+    while below[-1] > lo:
+        below.append(below[-1] - step())
+    out = []
+    for s in sorted(set(below[1:] + offsets)):
+        if s < lo - js.spacing or s > hi + js.spacing:
+            continue
+        dip = a + (math.radians(rng.gauss(0.0, js.dip_spread)) if js.dip_spread else 0.0)
+        u = (math.cos(dip), math.sin(dip))
+        p = (js.origin[0] + s * nrm[0], js.origin[1] + s * nrm[1])  # on this joint's line
+        # the line's parameter range over the box: around the box centre's projection, +- the diagonal
+        t0 = (cx - p[0]) * u[0] + (cy - p[1]) * u[1]
+        ta, tb = t0 - diag, t0 + diag
+        if js.trace is None:
+            out.append(((p[0] + ta * u[0], p[1] + ta * u[1]), (p[0] + tb * u[0], p[1] + tb * u[1])))
+            continue
+        period = js.trace + js.gap
+        k = math.floor(ta / period)  # traces start at the line's foot of the origin, every trace + gap
+        while k * period < tb:
+            t = k * period
+            out.append(((p[0] + t * u[0], p[1] + t * u[1]), (p[0] + (t + js.trace) * u[0], p[1] + (t + js.trace) * u[1])))
+            k += 1
+    return out
+
+
+def _inside_length(seg, poly):
+    """Length of the segment inside the simple polygon *poly*."""
+    (x0, y0), (x1, y1) = seg
+    ts = {0.0, 1.0}
+    n = len(poly)
+    for i in range(n):
+        (ax, ay), (bx, by) = poly[i], poly[(i + 1) % n]
+        den = (x1 - x0) * (by - ay) - (y1 - y0) * (bx - ax)
+        if den == 0:
+            continue
+        t = ((ax - x0) * (by - ay) - (ay - y0) * (bx - ax)) / den
+        u = ((ax - x0) * (y1 - y0) - (ay - y0) * (x1 - x0)) / den
+        if 0 < t < 1 and 0 <= u <= 1:
+            ts.add(t)
+    ts = sorted(ts)
+    L = math.hypot(x1 - x0, y1 - y0)
+    return sum((tb - ta) * L for ta, tb in zip(ts[:-1], ts[1:])
+               if point_in_polygon((x0 + 0.5 * (ta + tb) * (x1 - x0), y0 + 0.5 * (ta + tb) * (y1 - y0)), poly))
+
+
+def point_in_polygon(p, poly):
+    """*p* strictly inside the simple polygon *poly* (crossing number)."""
+    x, y = p
+    inside = False
+    n = len(poly)
+    for i in range(n):
+        (ax, ay), (bx, by) = poly[i], poly[(i + 1) % n]
+        if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
+            inside = not inside
+    return inside
+
+
+def _on(seg, trace, tol):
+    """The block edge *seg* lies on the trace segment (both ends within *tol*)."""
+    from .geometry import point_segment_distance
+    return all(point_segment_distance(p, trace[0], trace[1]) <= tol for p in seg)
+
+
+def jointset_blocks(surface=None, base=None, sets=(), traces=(), min_area=None, outline=None, layers=(),
+                    foundation=1.0, wall=1.0):
+    """Blocks of the slope under the ground polyline *surface* above *base* (or inside the simple polygon
+    *outline*, any shape) cut by the JointSets *sets* and the *traces* (polylines or :class:`Trace`),
+    see the module docstring. *min_area* [m2]: the sliver limit (default 1 % of the square of the
+    smallest set spacing, or 1e-4 of the outline's area without sets). *layers*, *foundation*,
+    *wall*: as for :func:`yade_rbsm.slope.brick_blocks` (with *outline*: a foundation under its lowest
+    point). Returns a SlopeBlocks (pattern "joint sets") with ``joint_sets`` (a :class:`SetCut` per set
+    and trace, in the order given), ``welds`` (the outline decomposition's cuts) and ``slivers``
+    (dict: merged places and area, kept places and area)."""
+    from . import slope as S
+    from .voronoi import _tess
+    from .geometry import polygon_area, points
+    who = "jointset_blocks"
+    if (surface is None) == (outline is None):
+        raise ValueError("%s: give the ground polyline surface (with base) or the polygon outline, not both" % who)
+    sets = list(sets)
+    for k, js in enumerate(sets):
+        if not isinstance(js, JointSet):
+            raise ValueError("%s: sets[%d] is not a JointSet (got %r)" % (who, k, js))
+    traces = [t if isinstance(t, Trace) else Trace(points("%s: traces[%d]" % (who, k), t, 2)) for k, t in enumerate(traces)]
+    if outline is not None:
+        if base is not None:
+            raise ValueError("%s: base goes with surface; an outline is the whole region" % who)
+        region = S.check_polygon(outline, "%s: outline" % who)
+        if polygon_area(region) < 0:
+            region = list(reversed(region))
+        xs, ys = [p[0] for p in region], [p[1] for p in region]
+        surf, base_y = [(min(xs), max(ys)), (max(xs), max(ys))], min(ys)
+        layers = S._check_layers(layers, min(xs), max(xs)) if layers else []
+    else:
+        if base is None:
+            raise ValueError("%s: give base (the y of the firm base) with surface" % who)
+        surf, base_y, _, _, layers, foundation, wall = S._common_args(surface, base, (), (), layers, foundation, wall, who)
+        region = S.slope_polygon(surf, base_y)
+    xs, ys = [p[0] for p in region], [p[1] for p in region]
+    bbox = (min(xs), min(ys), max(xs), max(ys))
+    area = polygon_area(region)
+    if min_area is None:
+        min_area = 0.01 * min(js.spacing for js in sets) ** 2 if sets else 1e-4 * area
+    min_area = number(who, "min_area", min_area, 0)
+    names = [js.name or "set %s" % chr(ord("A") + k) for k, js in enumerate(sets)]
+    names += [t.name or "traces[%d]" % k for k, t in enumerate(traces)]
+    source_segs = [set_traces(js, bbox) for js in sets]
+    source_segs += [list(zip(t.points[:-1], t.points[1:])) for t in traces]
+    # a trace end meant to lie on the outline or on another trace (a bedding that daylights on the face)
+    # is off it by round-off, and the exact cutter would take it for an end inside rock: every trace
+    # reaches 1e-9 x the model's size past its ends (the overshoot dangles, and goes)
+    reach = 1e-9 * max(bbox[2] - bbox[0], bbox[3] - bbox[1])
+    cut_segs = [_extended(s, reach) for segs in source_segs for s in segs]
+    cut_segs += [s for t, _ in layers if t is not None for s in zip(t[:-1], t[1:])]  # layer tops: bonded rock
+    r = _tess.cut_by_traces(region, cut_segs, min_area)
+    blocks = [S.Block(list(v), polygon_area(v), False, "slope") for v in r["blocks"]]
+    # tag each block edge shared by two blocks by the set or trace it lies on (the first that has it)
+    scale = max(1.0, max(abs(c) for p in region for c in p))
+    tol = 1e-9 * scale
+    cuts = [SetCut(src, nm) for src, nm in zip(sets + traces, names)]
+    faces = [[] for _ in cuts]  # every block edge on the set, from both sides of each joint
+    for b in blocks:
+        v = b.vertices
+        for i in range(len(v)):
+            e = (v[i], v[(i + 1) % len(v)])
+            for k, segs in enumerate(source_segs):
+                if any(_on(e, s, tol) for s in segs):
+                    faces[k].append(e)
+                    break
+    for sc, segs, f in zip(cuts, source_segs, faces):
+        # an edge on the outline is no joint (a set's line along the outline): blocks on both sides only
+        f = [e for e in f if not _on_outline(e, region, tol)]
+        sc.segments = list({tuple(sorted(e)): e for e in f}.values())
+        sc.length = 0.5 * sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in f)  # each joint seen from both sides
+        sc.given = sum(_inside_length(s, region) for s in segs)
+    if layers:
+        S._assign_layers(blocks, layers)
+    if outline is not None:
+        fixed = []
+        if foundation > 0:
+            f = [(min(xs) - wall, base_y - foundation), (max(xs) + wall, base_y - foundation), (max(xs) + wall, base_y),
+                 (min(xs) - wall, base_y)]
+            fixed.append(S.Block(f, polygon_area(f), True, "foundation"))
+    else:
+        fixed = S._fixed_blocks(surf, base_y, foundation, wall)
+    sb = S.SlopeBlocks(blocks + fixed, surf, base_y, area, 0.0, None,
+                       [[a, b] for sc in cuts for a, b in sc.segments], layers=layers, polygon=region,
+                       pattern="joint sets")
+    sb.joint_sets = cuts
+    sb.welds = [tuple(map(tuple, w)) for w in r["welds"]]
+    sb.slivers = dict(min_area=min_area, merged=[tuple(p) for p in r["merged"]], merged_area=r["merged_area"],
+                      kept=[tuple(p) for p in r["kept_slivers"]], kept_area=r["kept_area"])
+    return sb
+
+
+def _extended(seg, d):
+    (x0, y0), (x1, y1) = seg
+    L = math.hypot(x1 - x0, y1 - y0)
+    ux, uy = (x1 - x0) / L * d, (y1 - y0) / L * d
+    return ((x0 - ux, y0 - uy), (x1 + ux, y1 + uy))
+
+
+def _on_outline(e, region, tol):
+    n = len(region)
+    return any(_on(e, (region[i], region[(i + 1) % n]), tol) for i in range(n))
+
+
+def report(sb):
+    """The lines a user reads about a joint-set cut: blocks, each set's joints, welds, slivers."""
+    out = ["%d blocks tile %.4g m2 (%d fixed blocks besides)" % (len(sb.free), sb.slope_area, len(sb.blocks) - len(sb.free))]
+    for sc in sb.joint_sets:
+        src = sc.source
+        phi = "rock's" if src.friction_angle is None else "%g deg" % src.friction_angle
+        out.append("  %s: %.4g m of joint kept of %.4g m of trace inside the outline (c %g Pa, phi %s, sigma_t %g Pa)"
+                   % (sc.name, sc.length, sc.given, src.cohesion, phi, src.tensile_strength))
+    if sb.welds:
+        out.append("  welds (cuts of the non-convex outline, bonded with the rock's strength): %d, %.3g m"
+                   % (len(sb.welds), sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in sb.welds)))
+    s = sb.slivers
+    if s["merged"] or s["kept"]:
+        out.append("  slivers below %.3g m2: %d merged into a neighbour (%.3g m2, at %s)%s" % (
+            s["min_area"], len(s["merged"]), s["merged_area"], ", ".join("(%.2f, %.2f)" % p for p in s["merged"][:5]),
+            "" if not s["kept"] else "; %d kept, no convex union (%.3g m2, at %s)" % (
+                len(s["kept"]), s["kept_area"], ", ".join("(%.2f, %.2f)" % p for p in s["kept"][:5]))))
+    return "\n".join(out)

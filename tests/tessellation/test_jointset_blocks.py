@@ -1,0 +1,208 @@
+"""The joint-set cutter (issue 36): slope.JointSet and slope.jointset_blocks (py/yade_rbsm/joint_sets.py,
+the CGAL cutter pkg/rbsm/tessellation/TraceCut.cpp). Plain python3, no YADE.
+
+Checked on every cut (check_cut): the blocks tile the outline (sum of areas = the outline's area, exact
+fractions, rel. 1e-9; no overlap: CGAL's exact union area equals the sum), each is accepted by
+Polygon2D's own check (convex, counter-clockwise, no repeated or collinear vertex), none is below the
+sliver limit unless reported as kept, and every piece of boundary two blocks share lies on a set's or a
+trace's line or on a weld of the outline's decomposition: there is no other joint (the old way, cutting a
+non-convex outline at toe level first, left a joint through the whole model).
+"""
+import math
+import os
+import random
+import sys
+from fractions import Fraction
+
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE = os.environ.get("RBSM_SOURCE_DIR", os.path.normpath(os.path.join(HERE, "..", "..")))
+sys.path.insert(0, os.path.join(SOURCE, "py"))
+from yade_rbsm import slope  # noqa: E402
+from yade_rbsm import joint_sets as J  # noqa: E402
+from yade_rbsm.voronoi import _tess  # noqa: E402
+
+# the issue's slope: a 20 m 2:1 rock slope (toe flat, face, crest flat) on a base 10 m below the toe
+SURFACE = [(-10, 0), (10, 0), (20, 20), (40, 20)]
+SET_A = dict(dip=-20, spacing=3, friction_angle=30)  # dips 20 deg out of the face (+x)
+SET_B = dict(dip=110, spacing=4, origin=(1, 0), friction_angle=35, cohesion=1e4)  # 70 deg into it
+BENCH = [(0, 0), (40, 0), (40, 20), (28, 20), (24, 12), (18, 12), (14, 4), (0, 4)]  # a bench: two reflex corners
+OVERHANG = [(0, 0), (30, 0), (30, 14), (18, 14), (12, 10), (16, 6), (10, 2), (0, 2)]  # the face leans out
+
+
+def exact_area(poly):
+    s = Fraction(0)
+    for (x0, y0), (x1, y1) in zip(poly, poly[1:] + poly[:1]):
+        s += Fraction(x0) * Fraction(y1) - Fraction(x1) * Fraction(y0)
+    return abs(s) / 2
+
+
+def _on(p, a, b, tol):
+    ex, ey = b[0] - a[0], b[1] - a[1]
+    L = math.hypot(ex, ey)
+    cross = (ex * (p[1] - a[1]) - ey * (p[0] - a[0])) / L
+    t = (ex * (p[0] - a[0]) + ey * (p[1] - a[1])) / (L * L)
+    return abs(cross) <= tol and -tol / L <= t <= 1 + tol / L
+
+
+def shared_pieces(blocks, tol):
+    """(edge of a block, overlap length) for every edge that an edge of another block overlaps along a length."""
+    edges = [(i, (v[k], v[(k + 1) % len(v)])) for i, v in enumerate(blocks) for k in range(len(v))]
+    out = []
+    for i, (a, b) in edges:
+        L = math.hypot(b[0] - a[0], b[1] - a[1])
+        u = ((b[0] - a[0]) / L, (b[1] - a[1]) / L)
+        for j, (c, d) in edges:
+            if j == i or any(abs(u[0] * (p[1] - a[1]) - u[1] * (p[0] - a[0])) > tol for p in (c, d)):
+                continue  # the same block, or not on the line of a-b
+            tc, td = sorted(u[0] * (p[0] - a[0]) + u[1] * (p[1] - a[1]) for p in (c, d))
+            if min(L, td) - max(0.0, tc) > tol:
+                out.append(((a, b), min(L, td) - max(0.0, tc)))
+    return out
+
+
+def check_cut(sb, region, sets=(), traces=()):
+    free = [b.vertices for b in sb.free]
+    assert free
+    total = sum(exact_area(v) for v in free)
+    assert abs(float(total - exact_area(region))) <= 1e-9 * float(exact_area(region))
+    assert _tess.union_area(free) == pytest.approx(float(total), rel=1e-12)
+    for v in free:
+        assert _tess.polygon_problem(v) == "", v
+    small = [b.area for b in sb.free if b.area < sb.slivers["min_area"]]
+    assert len(small) == len(sb.slivers["kept"]), (small, sb.slivers)
+    scale = max(abs(c) for p in region for c in p)
+    tol = 1e-9 * max(1.0, scale)
+    lines = [s for js in sets for s in J.set_traces(js, _bbox(region))] + [s for t in traces for s in zip(t[:-1], t[1:])]
+    lines += [tuple(w) for w in sb.welds]
+    def on_lines(p):
+        return any(_on(p, a, b, 1e-6 * scale) for a, b in lines)
+    # (both ends and the middle: a corner that rounding put on the line of its neighbours went, and the edge
+    # then spans two joints that cross at a hair's angle)
+    stray = [e for e, _ in shared_pieces(free, tol)
+             if not (on_lines(e[0]) and on_lines(e[1]) and on_lines((0.5 * (e[0][0] + e[1][0]), 0.5 * (e[0][1] + e[1][1]))))]
+    assert stray == [], "joints on no set, trace or weld: %s" % stray[:5]
+    return sb
+
+
+def _bbox(region):
+    xs, ys = [p[0] for p in region], [p[1] for p in region]
+    return (min(xs), min(ys), max(xs), max(ys))
+
+
+def test_the_issue_slope_is_one_call():
+    A, B = slope.JointSet(**SET_A), slope.JointSet(**SET_B)
+    sb = slope.jointset_blocks(SURFACE, base=-10, sets=[A, B])
+    region = slope.slope_polygon(SURFACE, -10)
+    check_cut(sb, region, [A, B])
+    assert sb.pattern == "joint sets" and sb.dropped_area == 0 and len(sb.free) > 50
+    names = [sc.name for sc in sb.joint_sets]
+    assert names == ["set A", "set B"]
+    for sc in sb.joint_sets:  # persistent sets: every metre of trace inside the outline is a joint but slivers'
+        assert sc.length == pytest.approx(sc.given, rel=0.01) and sc.length <= sc.given + 1e-9
+    # the default sliver limit, 1 % of the smallest spacing squared: the two below it were merged
+    assert sb.slivers["min_area"] == pytest.approx(0.09) and len(sb.slivers["merged"]) >= 1
+    assert min(b.area for b in sb.free) >= 0.09
+    assert "set A" in J.report(sb) and "merged into a neighbour" in J.report(sb)
+
+
+def test_same_blocks_on_every_call():
+    a = slope.jointset_blocks(SURFACE, -10, sets=[slope.JointSet(**SET_A), slope.JointSet(**SET_B)])
+    b = slope.jointset_blocks(SURFACE, -10, sets=[slope.JointSet(**SET_A), slope.JointSet(**SET_B)])
+    assert [x.vertices for x in a.blocks] == [x.vertices for x in b.blocks]
+
+
+@pytest.mark.parametrize("seed", range(6))
+@pytest.mark.parametrize("outline", ["slope", "bench", "overhang"])
+def test_random_sets_on_non_convex_outlines(seed, outline):
+    rng = random.Random(seed)
+    sets = []
+    for k in range(rng.choice((1, 2, 3))):
+        persistent = rng.random() < 0.5
+        sp = rng.uniform(1.5, 5.0)
+        sets.append(slope.JointSet(dip=rng.uniform(-90, 90), spacing=sp, origin=(rng.uniform(0, 10), rng.uniform(0, 10)),
+                                   trace=None if persistent else rng.uniform(2, 12), gap=0 if persistent else rng.uniform(0.5, 3),
+                                   dip_spread=rng.choice((0, 5)), spacing_spread=rng.choice((0, 0.3)), seed=seed))
+    if outline == "slope":
+        region = slope.slope_polygon(SURFACE, -10)
+        sb = slope.jointset_blocks(SURFACE, -10, sets=sets)
+    else:
+        region = BENCH if outline == "bench" else OVERHANG
+        sb = slope.jointset_blocks(outline=region, sets=sets)
+    check_cut(sb, region, sets)
+    for sc in sb.joint_sets:
+        assert sc.length <= sc.given + 1e-6
+
+
+def test_a_non_convex_outline_gets_welds_not_a_joint_through_the_model():
+    """The bench alone: a few blocks joined by welds between its corners; before, the user split it at toe level
+    by hand, a joint through the whole model."""
+    sb = check_cut(slope.jointset_blocks(outline=BENCH), BENCH)
+    assert len(sb.free) >= 2 and len(sb.welds) == len(sb.free) - 1 and sb.joint_sets == []
+    for (a, b) in sb.welds:  # between corners of the outline
+        assert a in BENCH and b in BENCH
+
+
+def test_a_trace_that_ends_in_rock_is_no_joint():
+    """UDEC's rule: a trace that does not cut a block apart goes; one that does stays, with its strength."""
+    box = [(0, 0), (10, 0), (10, 10), (0, 10)]
+    half = slope.Trace([(-1, 5), (6, 5)], friction_angle=25)
+    full = slope.Trace([(5, -1), (5, 11)], friction_angle=25, name="fault")
+    sb = slope.jointset_blocks(outline=box, traces=[half], foundation=0)
+    assert len(sb.free) == 1 and sb.joint_sets[0].length == 0 and sb.joint_sets[0].given == pytest.approx(6)
+    sb = check_cut(slope.jointset_blocks(outline=box, traces=[half, full], foundation=0), box, traces=[half.points, full.points])
+    assert len(sb.free) == 3
+    assert sb.joint_sets[0].length == pytest.approx(5) and sb.joint_sets[1].length == pytest.approx(10)
+    assert sb.joint_sets[1].name == "fault"
+
+
+def test_a_trace_that_daylights_on_the_face_by_round_off_still_cuts():
+    """A bedding from a point computed on the face (off it by round-off) to a crack: the exact cutter took its
+    end for one inside rock and dropped the wedge."""
+    xt, H, beta, psi = 10.0, 12.0, math.radians(60), math.radians(30)
+    xd, yd, xc = xt + 3 / math.tan(beta), 3.0, 22.0
+    yc = yd + (xc - xd) * math.tan(psi)
+    surface = [(0, 0), (xt, 0), (xt + H / math.tan(beta), H), (35, H)]
+    sb = slope.jointset_blocks(surface, -4.0, traces=[[(xd, yd), (xc, yc)], [(xc, yc), (xc, H)]])
+    check_cut(sb, slope.slope_polygon(surface, -4.0), traces=[[(xd, yd), (xc, yc)], [(xc, yc), (xc, H)]])
+    assert [round(sc.length, 9) for sc in sb.joint_sets] == [round(sc.given, 9) for sc in sb.joint_sets]
+    assert sb.joint_sets[0].length == pytest.approx((xc - xd) / math.cos(psi))
+
+
+def test_slivers_are_merged_and_reported():
+    box = [(0, 0), (10, 0), (10, 10), (0, 10)]
+    t1, t2 = [(-1, 4.0), (11, 4.0)], [(-1, 4.02), (11, 4.1)]  # 0.027-0.093 m apart over the box: a sliver of 0.6 m2
+    sb = check_cut(slope.jointset_blocks(outline=box, traces=[t1, t2], min_area=1.0, foundation=0), box, traces=[t1, t2])
+    assert len(sb.free) == 2 and len(sb.slivers["merged"]) == 1 and sb.slivers["merged_area"] == pytest.approx(0.6, rel=1e-6)
+    sb = check_cut(slope.jointset_blocks(outline=box, traces=[t1, t2], min_area=0.5, foundation=0), box, traces=[t1, t2])
+    assert len(sb.free) == 3 and not sb.slivers["merged"]
+
+
+def test_far_from_the_origin():
+    off = 1e6
+    region = [(x + off, y + off) for x, y in BENCH]
+    sets = [slope.JointSet(dip=-30, spacing=2.5, origin=(off, off)), slope.JointSet(dip=80, spacing=3, origin=(off, off))]
+    check_cut(slope.jointset_blocks(outline=region, sets=sets), region, sets)
+
+
+@pytest.mark.parametrize("kw, message", [
+    (dict(dip=10, spacing=0), "spacing"),
+    (dict(dip=float("nan"), spacing=1), "dip"),
+    (dict(dip=10, spacing=1, gap=1), "gap"),
+    (dict(dip=10, spacing=1, friction_angle=95), "friction_angle"),
+    (dict(dip=10, spacing=1, origin=5), "origin"),
+    (dict(dip=10, spacing=1, ductile="no"), "ductile"),
+])
+def test_bad_joint_sets_are_named(kw, message):
+    with pytest.raises(ValueError, match=message):
+        slope.JointSet(**kw)
+
+
+def test_bad_calls_are_named():
+    with pytest.raises(ValueError, match="sets\\[0\\] is not a JointSet"):
+        slope.jointset_blocks(SURFACE, -10, sets=[(10, 3)])
+    with pytest.raises(ValueError, match="not both"):
+        slope.jointset_blocks(SURFACE, -10, outline=BENCH)
+    with pytest.raises(ValueError, match="base"):
+        slope.jointset_blocks(SURFACE)
