@@ -32,7 +32,7 @@ from typing import List, Optional, Sequence, Tuple
 
 from .checks import count, number
 
-__all__ = ["JointSet", "Trace", "SetCut", "jointset_blocks", "set_traces"]
+__all__ = ["JointSet", "Trace", "SetCut", "jointset_blocks", "jointset_blocks_dxf", "set_traces", "report"]
 
 
 @dataclass
@@ -289,6 +289,13 @@ def jointset_blocks(surface=None, base=None, sets=(), traces=(), min_area=None, 
         sc.segments = list({tuple(sorted(e)): e for e in f}.values())
         sc.length = 0.5 * sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in f)  # each joint seen from both sides
         sc.given = sum(_inside_length(s, region) for s in segs)
+    merged = {}
+    for sc in cuts:  # the traces of one name (a drawing's layer) are one family
+        m = merged.setdefault(sc.name, SetCut(sc.source, sc.name))
+        m.segments += sc.segments
+        m.length += sc.length
+        m.given += sc.given
+    cuts = list(merged.values())
     if layers:
         S._assign_layers(blocks, layers)
     if outline is not None:
@@ -307,6 +314,26 @@ def jointset_blocks(surface=None, base=None, sets=(), traces=(), min_area=None, 
     sb.slivers = dict(min_area=min_area, merged=[tuple(p) for p in r["merged"]], merged_area=r["merged_area"],
                       kept=[tuple(p) for p in r["kept_slivers"]], kept_area=r["kept_area"])
     return sb
+
+
+def jointset_blocks_dxf(filename, layers=None, outline_layer="OUTLINE", sets=(), units=None, **kw):
+    """:func:`jointset_blocks` of a slope drawing: the closed polyline on *outline_layer* is the outline,
+    the lines and polylines of the *layers* are joint traces (:func:`yade_rbsm.io.read_slope_dxf`; the
+    drawing's units honoured, or *units*). *layers*: {layer: strength} with the keywords of :class:`Trace`
+    (``dict(friction_angle=30, cohesion=1e4)``, or None for its defaults); default every layer with
+    lines, at Trace's defaults. The traces of a layer are one family named after it in the report and in
+    ``joint_sets``. *sets*: JointSets generated over the outline besides; *kw*: jointset_blocks'."""
+    from .io.slope_dxf import read_slope_dxf
+    d = read_slope_dxf(filename, outline_layer=outline_layer, trace_layers=None if layers is None else list(layers),
+                       units=units)
+    strength = {k.lower(): (v or {}) for k, v in (layers or {}).items()}
+    traces = []
+    for layer, polylines in d.traces.items():
+        opts = dict(strength.get(layer.lower(), {}))
+        if "name" in opts or "points" in opts:
+            raise ValueError("jointset_blocks_dxf: layers[%r]: the name is the layer's and the points the drawing's" % layer)
+        traces += [Trace(p, name=layer, **opts) for p in polylines]
+    return jointset_blocks(outline=d.outline, sets=sets, traces=traces, **kw)
 
 
 def _extended(seg, d):

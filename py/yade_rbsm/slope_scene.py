@@ -32,10 +32,16 @@ def build_scene(sb, material=None, thickness=1.0):
         return material if material is not None else sb.layers[0][1]
     order = [sb.blocks[k] for k in geometry.z_order([geometry.polygon_centroid(b.vertices) for b in sb.blocks])]
     bodies = [polygon2d(b.vertices, mat(b), thickness=thickness, fixed=b.fixed) for b in order]
+    built = _tagged(_BUILT_TAG) or {}
     for b, i in zip(order, O.bodies.append(bodies)):
         b.id = i
-        O.bodies[i].state.refPos = O.bodies[i].state.pos
-        O.bodies[i].state.refOri = O.bodies[i].state.ori
+        st = O.bodies[i].state
+        st.refPos, st.refOri = st.pos, st.ori
+        axis, angle = st.ori.toAxisAngle()
+        built[str(i)] = [st.pos[0], st.pos[1], angle * (1.0 if axis[2] >= 0 else -1.0)]
+    # the pose each block was built in, kept with the scene: joints_on reads its cuts there, whatever
+    # State.refPos and refOri become (resetting them is how YADE scripts reset displacements)
+    O.tags[_BUILT_TAG] = json.dumps(built)
     sb.ids = [b.id for b in sb.blocks]
     return sb.ids
 
@@ -63,10 +69,10 @@ def joints_on(polylines, tol=None):
     """The real joints whose contact segment lies on a segment of one of the *polylines* (both ends
     within *tol*, default 1e-6 x the scene size; length > *tol*: corner contacts at a point of the
     polyline are not on it) with their two blocks on opposite sides of it: the joints a cut along
-    the polylines made (builders' ``joints=`` and ``cracks=``). Tested in the blocks' reference
-    configuration (State.refPos, refOri: where build_scene put them), so that a settled slope's joints
-    are found on the polylines it was cut along (a script that resets refPos, or refOri, alone after
-    settling moves that pose off the cut). The segment (RbsmGeom.p0, p1) lies on the edge of
+    the polylines made (builders' ``joints=`` and ``cracks=``). Tested in the pose build_scene put the
+    blocks in (kept with the scene in O.tags: resetting State.refPos and refOri, YADE's way to reset
+    displacements, changes nothing; for bodies build_scene did not make, their refPos and refOri), so
+    that a settled slope's joints are found on the polylines it was cut along. The segment (RbsmGeom.p0, p1) lies on the edge of
     the block that holds the reference edge (RbsmGeom.refBody), and was computed before the last
     step moved the blocks: it is taken back with that block's pose of then (pos - vel dt, ori
     turned back by angVel dt), so that neither the joint's overlap (mm in a settled soft slope) nor
@@ -81,12 +87,13 @@ def joints_on(polylines, tol=None):
     tol = _tolerance(segs, tol)
     out = {(I.id1, I.id2): I for I, _, _ in _reference_segments(segs, tol)}
     n = len(O.bodies)
+    pose = _built_poses()
     for id1, id2, x0, y0, x1, y1 in _recorded_cuts():
         # a block erased since, or held by another rank under yade.mpy (the records are every rank's):
         # YADE's interactions.has() aborts the process for a body that is not there
         if not all(0 <= i < n and O.bodies[i] is not None for i in (id1, id2)):
             continue
-        if (id1, id2) not in out and O.interactions.has(id1, id2) and _on_segments((x0, y0), (x1, y1), segs, tol, id1, id2):
+        if (id1, id2) not in out and O.interactions.has(id1, id2) and _on_segments((x0, y0), (x1, y1), segs, tol, id1, id2, pose):
             I = O.interactions[id1, id2]
             if I.isReal:
                 out[(id1, id2)] = I
@@ -94,6 +101,22 @@ def joints_on(polylines, tol=None):
 
 
 _CUTS_TAG = "yade_rbsm.cut_joints"
+_BUILT_TAG = "yade_rbsm.built_pose"
+
+
+def _built_poses():
+    """id -> (pos, ori) of the pose build_scene put each body in (O.tags), State.refPos and refOri for the
+    bodies it did not build (a scene saved before the tag: the same, unless the script reset them)."""
+    from yade import O, Quaternion, Vector3
+    tag = _tagged(_BUILT_TAG) or {}
+
+    def pose(i):
+        p = tag.get(str(i))
+        if p is None:
+            s = O.bodies[i].state
+            return s.refPos, s.refOri
+        return Vector3(p[0], p[1], 0), Quaternion(Vector3(0, 0, 1), p[2])
+    return pose
 
 
 def _segments(polylines):
@@ -106,14 +129,14 @@ def _tolerance(segs, tol):
     return 1e-6 * max(max(abs(c) for s in segs for p in s for c in p), 1.0)
 
 
-def _on_segments(p0, p1, segs, tol, id1, id2):
+def _on_segments(p0, p1, segs, tol, id1, id2, pose=None):
     """The reference segment p0-p1 of the joint of bodies id1, id2 lies on one of *segs* with the blocks
-    (reference centroids) on opposite sides of it."""
-    from yade import O
+    (centroids in the built pose, *pose*: :func:`_built_poses`) on opposite sides of it."""
     from .geometry import point_segment_distance
     if math.hypot(p1[0] - p0[0], p1[1] - p0[1]) <= tol:
         return False
-    c1, c2 = O.bodies[id1].state.refPos, O.bodies[id2].state.refPos
+    pose = pose or _built_poses()
+    c1, c2 = pose(id1)[0], pose(id2)[0]
 
     def opposite(a, b):
         dx, dy = b[0] - a[0], b[1] - a[1]
@@ -130,6 +153,7 @@ def _reference_segments(segs, tol):
     from yade import O, Quaternion, Vector3
     from . import omega
     dt = O.dt
+    pose = _built_poses()
     for I in omega.joints(O):
         ids = (I.id2, I.id1) if getattr(I.geom, "refBody", 1) == 2 else (I.id1, I.id2)
         if type(O.bodies[ids[0]].shape).__name__ != "Polygon2D":  # a wall's or facet's edge: the block's pose
@@ -137,13 +161,14 @@ def _reference_segments(segs, tol):
         s = O.bodies[ids[0]].state
         pos = s.pos - s.vel * dt  # the pose the geometry was computed in (NewtonIntegrator: pos += vel dt)
         ori = Quaternion(Vector3(0, 0, 1), -s.angVel[2] * dt) * s.ori
-        back = s.refOri * ori.conjugate()  # that pose -> the reference pose
+        ref_pos, ref_ori = pose(ids[0])
+        back = ref_ori * ori.conjugate()  # that pose -> the built pose
 
         def ref(x):
-            v = s.refPos + back * (Vector3(x[0], x[1], 0) - pos)
+            v = ref_pos + back * (Vector3(x[0], x[1], 0) - pos)
             return v[0], v[1]
         p0, p1 = ref(I.geom.p0), ref(I.geom.p1)
-        if _on_segments(p0, p1, segs, tol, I.id1, I.id2):
+        if _on_segments(p0, p1, segs, tol, I.id1, I.id2, pose):
             yield I, p0, p1
 
 
@@ -240,7 +265,7 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
         if n == 0:
             raise ValueError("%s: no joint lies on polylines[%d] %s (give the polyline the blocks were cut along, "
                              "after build_scene and bond_and_break; the joints are looked for where build_scene put "
-                             "the blocks, State.refPos and refOri: were these reset since?)" % (who, k, polylines[k]))
+                             "the blocks, kept in O.tags, or for other bodies State.refPos and refOri: were these reset since?)" % (who, k, polylines[k]))
     joint_set = dict(polylines=[[list(p) for p in l] for l in polylines], tol=tol, cohesion=cohesion,
                      tan_phi=math.tan(friction_angle), tensile_strength=tensile_strength, ductile=ductile,
                      kn=stiffness[0], ks=stiffness[1])

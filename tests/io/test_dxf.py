@@ -122,3 +122,67 @@ report(before=before, after=world(), fixed=[b.state.blockedDOFs for b in O.bodie
     assert r["fixed"] == ["xyzXYZ", "zXY"]
     for b0, b1 in zip(r["before"], r["after"]):
         assert sum(b1, []) == pytest.approx(sum(b0, []), rel=1e-14, abs=1e-14)
+
+
+UNITS = r"""
+import yade_rbsm.io as io
+rock = RbsmMat(label="rock", density=2500)
+O.materials.append(rock)
+out = {}
+for f, kw in (("mm.dxf", {}), ("unitless.dxf", {}), ("unitless.dxf", {"units": "mm"}), ("ft.dxf", {})):
+    bs = io.import_dxf(f, rock, **kw)
+    out[f + str(kw)] = [b.shape.area for b in bs] + [b.state.mass for b in bs]
+errors = {}
+for f, kw in (("parsecs.dxf", {}), ("mm.dxf", {"units": "furlong"})):
+    try:
+        io.import_dxf(f, rock, **kw)
+    except ValueError as e:
+        errors[f + str(kw)] = str(e)
+report(out=out, errors=errors)
+"""
+
+
+def _square_drawing(path, insunits, side):
+    doc = ezdxf.new("R2010")
+    if insunits is not None:
+        doc.header["$INSUNITS"] = insunits
+    doc.modelspace().add_lwpolyline([(0, 0), (side, 0), (side, side), (0, side)], close=True)
+    doc.saveas(path)
+
+
+def test_drawing_units_are_honoured(tmp_path):
+    """Issue 36: a drawing in millimetres ($INSUNITS = 4) was read as metres: area x 1e6, mass 1.2e9 kg, no
+    warning. Now $INSUNITS scales to metres (or units= says it); a unit that is no length is refused."""
+    _square_drawing(str(tmp_path / "mm.dxf"), 4, 1000.0)  # a 1 m square drawn in mm
+    _square_drawing(str(tmp_path / "unitless.dxf"), 0, 1000.0)
+    _square_drawing(str(tmp_path / "ft.dxf"), 2, 1.0)
+    _square_drawing(str(tmp_path / "parsecs.dxf"), 19, 1.0)  # 19: parsecs, no unit for a slope
+    (r,) = run_ok(UNITS, workdir=str(tmp_path))
+    assert r["out"]["mm.dxf{}"] == pytest.approx([1.0, 2500.0])
+    assert r["out"]["unitless.dxf{}"] == pytest.approx([1e6, 2.5e9])  # unitless: metres, as before
+    assert r["out"]["unitless.dxf{'units': 'mm'}"] == pytest.approx([1.0, 2500.0])
+    assert r["out"]["ft.dxf{}"] == pytest.approx([0.3048 ** 2, 2500 * 0.3048 ** 2])
+    assert "$INSUNITS = 19" in r["errors"]["parsecs.dxf{}"] and "units=" in r["errors"]["parsecs.dxf{}"]
+    assert "furlong" in r["errors"]["mm.dxf{'units': 'furlong'}"]
+
+
+def test_thickness_survives_export_and_import(tmp_path):
+    """Issue 36: DXF export -> import turned a thickness of 0.5 m into 1.0 (the mass doubled) without a word.
+    export_dxf writes each block's thickness (the entity's DXF thickness) and $INSUNITS = metres."""
+    script = r"""
+import yade_rbsm.io as io
+from yade_rbsm import polygon2d
+rock = RbsmMat(label="rock", density=2500)
+O.materials.append(rock)
+O.bodies.append(polygon2d([(0, 0), (2, 0), (2, 1), (0, 1)], rock, thickness=0.5))
+O.bodies.append(polygon2d([(3, 0), (4, 0), (4, 1), (3, 1)], rock, thickness=2.0))
+before = [(b.shape.thickness, b.state.mass) for b in O.bodies]
+io.export_dxf("out.dxf")
+O.bodies.clear()
+O.bodies.append(io.import_dxf("out.dxf", rock))
+after = [(b.shape.thickness, b.state.mass) for b in O.bodies]
+import ezdxf
+report(before=before, after=after, insunits=ezdxf.readfile("out.dxf").header.get("$INSUNITS"))
+"""
+    (r,) = run_ok(script, workdir=str(tmp_path))
+    assert sum(r["after"], []) == pytest.approx(sum(r["before"], [])) and r["insunits"] == 6

@@ -206,3 +206,58 @@ def test_bad_calls_are_named():
         slope.jointset_blocks(SURFACE, -10, outline=BENCH)
     with pytest.raises(ValueError, match="base"):
         slope.jointset_blocks(SURFACE)
+
+
+def _slope_drawing(path, insunits=4, k=1000.0):
+    """The issue's drawing, in millimetres: the outline of the 20 m 2:1 slope and the traces of its two sets
+    (set A dipping 20 deg out of the face every 3 m, set B 70 deg into it every 4 m) drawn as LINEs past the
+    outline, on layers SET_A and SET_B; a TEXT besides."""
+    import ezdxf
+    doc = ezdxf.new("R2010")
+    doc.header["$INSUNITS"] = insunits
+    msp = doc.modelspace()
+    region = slope.slope_polygon(SURFACE, -10)
+    msp.add_lwpolyline([(x * k, y * k) for x, y in region], close=True, dxfattribs={"layer": "OUTLINE"})
+    for layer, js in (("SET_A", slope.JointSet(**SET_A)), ("SET_B", slope.JointSet(**SET_B))):
+        for a, b in J.set_traces(js, _bbox(region)):
+            msp.add_line((a[0] * k, a[1] * k), (b[0] * k, b[1] * k), dxfattribs={"layer": layer})
+    msp.add_text("two joint sets")
+    doc.saveas(path)
+    return region
+
+
+def test_the_issue_slope_is_one_call_from_a_drawing_in_millimetres(tmp_path):
+    region = _slope_drawing(str(tmp_path / "slope.dxf"))
+    with pytest.warns(UserWarning, match="1 TEXT"):
+        sb = slope.jointset_blocks_dxf(str(tmp_path / "slope.dxf"), layers={"SET_A": dict(friction_angle=30),
+                                                                           "set_b": dict(friction_angle=35, cohesion=1e4)})
+    check_cut(sb, region, [slope.JointSet(**SET_A), slope.JointSet(**SET_B)])
+    assert sb.slope_area == pytest.approx(1000.0)  # m2, not mm2
+    ref = slope.jointset_blocks(outline=region, sets=[slope.JointSet(**SET_A), slope.JointSet(**SET_B)])
+    assert len(sb.free) == len(ref.free)
+    assert [sc.name for sc in sb.joint_sets] == ["SET_A", "SET_B"]
+    assert [sc.source.friction_angle for sc in sb.joint_sets] == [30, 35] and sb.joint_sets[1].source.cohesion == 1e4
+    for sc, r in zip(sb.joint_sets, ref.joint_sets):
+        assert sc.length == pytest.approx(r.length, rel=1e-9)
+
+
+@pytest.mark.parametrize("bad, message", [
+    ("open", "open polyline"), ("two", "2 polylines on the outline layer"), ("none", "no closed polyline on the outline"),
+    ("bulge", "bulge"), ("units", "INSUNITS = 19"), ("crossing", "self-intersecting"),
+])
+def test_bad_slope_drawings_are_refused_by_name(tmp_path, bad, message):
+    import ezdxf
+    doc = ezdxf.new("R2010")
+    doc.header["$INSUNITS"] = 19 if bad == "units" else 6
+    msp = doc.modelspace()
+    box = [(0, 0), (10, 0), (10, 5), (0, 5)]
+    if bad != "none":
+        pts = [(0, 0), (10, 5), (10, 0), (0, 5)] if bad == "crossing" else box
+        msp.add_lwpolyline(pts, close=bad != "open", dxfattribs={"layer": "OUTLINE"})
+    if bad == "two":
+        msp.add_lwpolyline([(20, 0), (21, 0), (21, 1)], close=True, dxfattribs={"layer": "OUTLINE"})
+    msp.add_lwpolyline([(-1, 2, 0.5), (11, 3, 0)] if bad == "bulge" else [(-1, 2), (11, 3)], format="xyb", dxfattribs={"layer": "J1"})
+    doc.saveas(str(tmp_path / "bad.dxf"))
+    with pytest.raises(ValueError, match=message) as e:
+        slope.jointset_blocks_dxf(str(tmp_path / "bad.dxf"))
+    assert "bad.dxf" in str(e.value)

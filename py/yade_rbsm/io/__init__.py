@@ -5,12 +5,15 @@
 * :func:`export_joints`: the state of every RBSM joint to CSV, for analysis elsewhere.
 * :func:`import_dxf`: closed polylines of a DXF drawing as blocks, layers mapped to materials
   (:mod:`.dxf`, needs Debian's python3-ezdxf); :func:`export_dxf` writes blocks back.
+* :func:`read_slope_dxf`: a slope drawing's outline and joint-trace layers, for
+  ``slope.jointset_blocks`` (:mod:`.slope_dxf`; ``slope.jointset_blocks_dxf`` reads and cuts in one call).
 * :func:`describe`: which classes a YADE save file needs and which the local YADE lacks; works
   without the plugin and without YADE (:mod:`.describe`, also a command: ``python3 describe.py f``).
 
 Importers return lists of bodies, like ``ymport``: ``O.bodies.append(import_blocks("slope.csv"))``.
 """
 from .describe import describe  # noqa: F401  (no YADE needed)
+from .slope_dxf import read_slope_dxf, SlopeDrawing  # noqa: F401  (no YADE needed; ezdxf when called)
 
 try:
     import yade.wrapper  # noqa: F401

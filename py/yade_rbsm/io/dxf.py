@@ -7,6 +7,12 @@ drawing direction carries no meaning: clockwise polylines are reversed (not refu
 an error naming the file, the entity's handle and layer: open polylines, arc segments (bulges),
 fewer than 3 distinct vertices, self-intersecting or non-convex outlines, layers without a
 material. Other entities (lines, text, hatches ...) are skipped with a warning that counts them.
+
+Units: the drawing's ``$INSUNITS`` scales it to metres (0, unitless, is taken as metres; a unit that is
+no length for a slope, e.g. parsecs, is refused naming it), or ``units=`` says them ("mm", "cm", "dm",
+"m", "km", "in", "ft", "yd"). Thickness: a polyline's DXF thickness (group 39, in the drawing's units) is
+the block's thickness; ``export_dxf`` writes it, and ``$INSUNITS = 6`` (metres), so a round trip keeps
+the mass. The materials are not in the drawing, only their labels (the layers): give them on import.
 """
 import warnings
 
@@ -14,18 +20,10 @@ from yade import wrapper
 
 from ..blocks import polygon2d
 from ..omega import is_fixed
+from .dxf_units import _ezdxf, drawing_scale
 from .polylines import block_outline
 
-__all__ = ["import_dxf", "export_dxf"]
-
-
-def _ezdxf():
-    try:
-        import ezdxf
-    except ImportError:
-        raise ImportError("yade_rbsm.io: DXF needs ezdxf (Debian: apt-get install python3-ezdxf)") from None
-    return ezdxf
-
+__all__ = ["import_dxf", "export_dxf", "drawing_scale"]
 
 def _rings(msp, filename):
     """(handle, layer, [(x, y)...] in world coordinates, closed flag) of every polyline; counts the rest."""
@@ -40,7 +38,7 @@ def _rings(msp, filename):
                 raise ValueError("%s: arc segment (bulge): blocks are polygons, straight edges only" % where)
             ocs, z = e.ocs(), e.dxf.elevation
             xy = [ocs.to_wcs(Vec3(x, y, z)) for x, y, _ in pts]
-            yield where, e.dxf.layer, [(p.x, p.y) for p in xy], e.closed
+            yield where, e.dxf.layer, [(p.x, p.y) for p in xy], e.closed, e.dxf.get("thickness", 0.0)
         elif kind == "POLYLINE":
             if not (e.is_2d_polyline or e.is_3d_polyline):
                 raise ValueError("%s: a polygon mesh or polyface is not a block outline" % where)
@@ -48,7 +46,7 @@ def _rings(msp, filename):
                 raise ValueError("%s: arc segment (bulge): blocks are polygons, straight edges only" % where)
             pts = list(e.points())  # OCS for a 2D polyline, WCS for a 3D one
             xy = [e.ocs().to_wcs(p) for p in pts] if e.is_2d_polyline else pts
-            yield where, e.dxf.layer, [(p.x, p.y) for p in xy], e.is_closed
+            yield where, e.dxf.layer, [(p.x, p.y) for p in xy], e.is_closed, e.dxf.get("thickness", 0.0)
         else:
             skipped[kind] = skipped.get(kind, 0) + 1
     if skipped:
@@ -65,14 +63,16 @@ def _material(layer, materials, O, where):
     raise ValueError("%s: layer %r has no material (materials= maps: %s)" % (where, layer, ", ".join(map(repr, materials)) or "nothing"))
 
 
-def import_dxf(filename, materials, fixed_layers=(), thickness=1.0, O=None):
+def import_dxf(filename, materials, fixed_layers=(), thickness=None, O=None, units=None):
     """Reads the DXF file *filename* and returns one :yref:`Polygon2D` body per closed polyline of
     its model space, in drawing order (``O.bodies.append(import_dxf("joints.dxf", {"rock": rock}))``).
 
     *materials*: dict layer name -> RbsmMat (or its id/label in O.materials), or one RbsmMat for
     every layer; *fixed_layers*: names of the layers whose blocks are fixed (foundation, walls);
-    *thickness*: out-of-plane thickness of the blocks [m]. Clockwise polylines are reversed; the
-    problems listed in the module docstring raise ValueError naming file, entity handle and layer."""
+    *thickness*: out-of-plane thickness of the blocks [m] where a polyline has none (default 1; a
+    polyline's own DXF thickness wins, as export_dxf writes it); *units*: the drawing's length unit
+    (default: its $INSUNITS, module docstring). Clockwise polylines are reversed; the problems listed
+    in the module docstring raise ValueError naming file, entity handle and layer."""
     if O is None:
         from yade import O
     ezdxf = _ezdxf()
@@ -82,13 +82,15 @@ def import_dxf(filename, materials, fixed_layers=(), thickness=1.0, O=None):
         raise ValueError("%s: cannot read the file (%s)" % (filename, e)) from None
     except ezdxf.DXFStructureError as e:
         raise ValueError("%s: not a valid DXF file (%s)" % (filename, e)) from None
+    scale = drawing_scale(doc, units, filename)
     fixed = {l.lower() for l in fixed_layers}
     bodies = []
-    for where, layer, pts, closed in _rings(doc.modelspace(), filename):
-        ring, _ = block_outline(pts, closed, where)
+    for where, layer, pts, closed, drawn_thickness in _rings(doc.modelspace(), filename):
+        ring, _ = block_outline([(x * scale, y * scale) for x, y in pts], closed, where)
         mat = _material(layer, materials, O, where)
+        t = drawn_thickness * scale if drawn_thickness > 0 else (1.0 if thickness is None else thickness)
         try:
-            bodies.append(polygon2d(ring, mat, thickness=thickness, fixed=layer.lower() in fixed))
+            bodies.append(polygon2d(ring, mat, thickness=t, fixed=layer.lower() in fixed))
         except ValueError as e:
             raise ValueError("%s: %s" % (where, e)) from None
     return bodies
@@ -98,7 +100,8 @@ def export_dxf(filename, bodies=None, O=None):
     """Writes the :yref:`Polygon2D` bodies (all, or those in *bodies*) as closed LWPOLYLINEs in the
     world frame to the DXF file *filename*: layer = the material's label (``mat<id>`` without one),
     fixed blocks on ``<label>_fixed``, so that ``import_dxf(f, {...}, fixed_layers=[...])`` reads
-    them back. Returns the number of blocks written."""
+    them back; each block's thickness as the polyline's DXF thickness, the drawing in metres
+    ($INSUNITS = 6). Returns the number of blocks written."""
     if O is None:
         from yade import O
     ezdxf = _ezdxf()
@@ -107,6 +110,7 @@ def export_dxf(filename, bodies=None, O=None):
     else:
         bodies = [O.bodies[b] if isinstance(b, int) else b for b in bodies]
     doc = ezdxf.new("R2010")
+    doc.header["$INSUNITS"] = 6
     msp = doc.modelspace()
     n = 0
     for b in bodies:
@@ -117,7 +121,7 @@ def export_dxf(filename, bodies=None, O=None):
         if layer not in doc.layers:
             doc.layers.add(layer)
         pts = [(v[0], v[1]) for v in b.shape.worldVertices(b.state.pos, b.state.ori)]
-        msp.add_lwpolyline(pts, close=True, dxfattribs={"layer": layer})
+        msp.add_lwpolyline(pts, close=True, dxfattribs={"layer": layer, "thickness": b.shape.thickness})
         n += 1
     doc.saveas(filename)
     return n

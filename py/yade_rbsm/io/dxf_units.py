@@ -1,0 +1,32 @@
+"""The length unit of a DXF drawing, and ezdxf itself (pure Python, no YADE): shared by the block
+importer (:mod:`.dxf`) and the slope-drawing reader (:mod:`.slope_dxf`)."""
+
+__all__ = ["drawing_scale"]
+
+# $INSUNITS codes of lengths a slope is drawn in -> metres, and the names units= takes
+_INSUNITS = {0: ("unitless, taken as metres", 1.0), 1: ("in", 0.0254), 2: ("ft", 0.3048), 4: ("mm", 1e-3),
+             5: ("cm", 1e-2), 6: ("m", 1.0), 7: ("km", 1e3), 10: ("yd", 0.9144), 14: ("dm", 0.1)}
+_UNITS = {name: m for code, (name, m) in _INSUNITS.items() if code}
+
+
+def drawing_scale(doc, units, filename):
+    """Metres per drawing unit of the ezdxf document *doc*: from *units* if given, else $INSUNITS."""
+    if units is not None:
+        if units not in _UNITS:
+            raise ValueError("%s: units=%r is not a length this reader knows (%s)" % (filename, units, ", ".join(sorted(_UNITS))))
+        return _UNITS[units]
+    code = doc.header.get("$INSUNITS", 0)
+    if code not in _INSUNITS:
+        raise ValueError("%s: the drawing's units, $INSUNITS = %r, are no length a slope is drawn in (known: %s); "
+                         "give units= if the numbers are in one of %s" % (
+                             filename, code, ", ".join("%d %s" % (k, v[0]) for k, v in sorted(_INSUNITS.items())),
+                             ", ".join(sorted(_UNITS))))
+    return _INSUNITS[code][1]
+
+
+def _ezdxf():
+    try:
+        import ezdxf
+    except ImportError:
+        raise ImportError("yade_rbsm.io: DXF needs ezdxf (Debian: apt-get install python3-ezdxf)") from None
+    return ezdxf

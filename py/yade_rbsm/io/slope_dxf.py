@@ -1,0 +1,102 @@
+"""A slope drawing (DXF) read as an outline and joint traces, for :func:`yade_rbsm.slope.jointset_blocks`
+(``slope.jointset_blocks_dxf`` does both in one call). Pure Python with ezdxf; no YADE.
+
+The drawing: one closed polyline on the outline layer (any simple polygon, non-convex included), and
+joint traces on other layers: LINEs and open or closed LWPOLYLINE/POLYLINEs, one layer per joint set
+or family of mapped joints. The drawing's units are honoured as :mod:`.dxf` says ($INSUNITS or
+``units=``). Refused, naming the file, the entity's handle and layer: no outline or more than one, an
+open, self-intersecting or bulged outline, a bulged trace, a trace of a single point. Entities of other
+kinds (text, hatches, dimensions) and layers not asked for are reported in a warning.
+"""
+import warnings
+from dataclasses import dataclass, field
+from typing import Dict, List, Tuple
+
+from .dxf_units import _ezdxf, drawing_scale
+from .polylines import block_outline
+
+__all__ = ["SlopeDrawing", "read_slope_dxf"]
+
+
+@dataclass
+class SlopeDrawing:
+    outline: List[Tuple[float, float]]  # counter-clockwise, metres
+    traces: Dict[str, List[List[Tuple[float, float]]]] = field(default_factory=dict)  # layer -> polylines, metres
+    scale: float = 1.0  # metres per drawing unit
+
+    def __repr__(self):
+        return "SlopeDrawing(outline of %d vertices, traces: %s; %g m per drawing unit)" % (
+            len(self.outline), ", ".join("%s %d" % (k, len(v)) for k, v in self.traces.items()) or "none", self.scale)
+
+
+def _points(e, where):
+    from ezdxf.math import Vec3
+    kind = e.dxftype()
+    if kind == "LINE":
+        return [(e.dxf.start.x, e.dxf.start.y), (e.dxf.end.x, e.dxf.end.y)], False
+    if kind == "LWPOLYLINE":
+        pts = list(e.get_points("xyb"))
+        if any(b != 0 for _, _, b in pts):
+            raise ValueError("%s: arc segment (bulge): straight segments only" % where)
+        ocs, z = e.ocs(), e.dxf.elevation
+        return [(p.x, p.y) for p in (ocs.to_wcs(Vec3(x, y, z)) for x, y, _ in pts)], e.closed
+    if kind == "POLYLINE" and (e.is_2d_polyline or e.is_3d_polyline):
+        if any(v.dxf.bulge != 0 for v in e.vertices):
+            raise ValueError("%s: arc segment (bulge): straight segments only" % where)
+        pts = list(e.points())
+        xy = [e.ocs().to_wcs(p) for p in pts] if e.is_2d_polyline else pts
+        return [(p.x, p.y) for p in xy], e.is_closed
+    return None, None
+
+
+def read_slope_dxf(filename, outline_layer="OUTLINE", trace_layers=None, units=None):
+    """The outline and the traces of the DXF *filename* (module docstring): a :class:`SlopeDrawing`.
+    *trace_layers*: the layers to read traces from (default: every layer but the outline's that has
+    lines); layer names match case-insensitively."""
+    ezdxf = _ezdxf()
+    try:
+        doc = ezdxf.readfile(filename)
+    except IOError as e:
+        raise ValueError("%s: cannot read the file (%s)" % (filename, e)) from None
+    except ezdxf.DXFStructureError as e:
+        raise ValueError("%s: not a valid DXF file (%s)" % (filename, e)) from None
+    scale = drawing_scale(doc, units, filename)
+    wanted = None if trace_layers is None else {l.lower(): l for l in trace_layers}
+    outlines, traces, skipped, other_layers = [], {}, {}, set()
+    for e in doc.modelspace():
+        layer = e.dxf.layer
+        where = "%s: %s #%s on layer %r" % (filename, e.dxftype(), e.dxf.handle, layer)
+        pts, closed = _points(e, where)
+        if pts is None:
+            skipped[e.dxftype()] = skipped.get(e.dxftype(), 0) + 1
+            continue
+        pts = [(x * scale, y * scale) for x, y in pts]
+        if layer.lower() == outline_layer.lower():
+            outlines.append((where, pts, closed))
+            continue
+        if wanted is not None and layer.lower() not in wanted:
+            other_layers.add(layer)
+            continue
+        if closed and pts[0] != pts[-1]:
+            pts = pts + [pts[0]]
+        if len(set(pts)) < 2:
+            raise ValueError("%s: a trace of a single point" % where)
+        traces.setdefault(layer, []).append(pts)  # the drawing's spelling of the layer
+    if not outlines:
+        raise ValueError("%s: no closed polyline on the outline layer %r (layers: %s)" % (
+            filename, outline_layer, ", ".join(sorted(l.dxf.name for l in doc.layers))))
+    if len(outlines) > 1:
+        raise ValueError("%s: %d polylines on the outline layer %r (%s): the outline is one closed polyline" % (
+            filename, len(outlines), outline_layer, "; ".join(w for w, _, _ in outlines)))
+    where, pts, closed = outlines[0]
+    outline, _ = block_outline(pts, closed, where)
+    if wanted is not None:
+        have = {l.lower() for l in traces}
+        missing = [l for k, l in wanted.items() if k not in have]
+        if missing:
+            raise ValueError("%s: no trace on the layers %s" % (filename, ", ".join(map(repr, missing))))
+    if skipped or other_layers:
+        warnings.warn("read_slope_dxf: %s: skipped %s" % (filename, "; ".join(
+            (["%d %s" % (n, k) for k, n in sorted(skipped.items())] if skipped else [])
+            + (["the layers %s (not in trace_layers)" % ", ".join(sorted(other_layers))] if other_layers else []))))
+    return SlopeDrawing(outline, traces, scale)
