@@ -5,7 +5,7 @@ and the argument instead of looping forever (``check=0``) or silently switching 
 import math
 import numbers
 
-__all__ = ["number", "count", "body_ids"]
+__all__ = ["number", "count", "flag", "body_ids"]
 
 
 def number(where, name, value, low=None, high=None, low_open=False, high_open=False):
@@ -31,6 +31,14 @@ def count(where, name, value, low=1):
     if value < low:
         raise ValueError("%s: %s must be a whole number >= %d (got %r)" % (where, name, low, value))
     return int(value)
+
+
+def flag(where, name, value):
+    """*value* if it is True or False (numpy's bool too), else ValueError naming it: "no" is a true string,
+    and settle(density_scaling="no") ran with the scaling on."""
+    if isinstance(value, bool) or type(value).__name__ == "bool_":
+        return bool(value)
+    raise ValueError("%s: %s must be True or False (got %r)" % (where, name, value))
 
 
 def body_ids(where, ids):

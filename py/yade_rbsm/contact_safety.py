@@ -23,6 +23,10 @@ class ContactFS:
     def row(self, label="Present method (RBSM)"):
         return (label, self.shear, self.normal, self.fs)
 
+    def __repr__(self):
+        return "ContactFS(fs=%.4g, shear %.4g kN, normal %.4g kN, resisting %.4g kN, %d joints over %.3g m)" % (
+            self.fs, self.shear, self.normal, self.resisting, self.n_joints, self.length)
+
 
 def contact_fs(surface, tol=None, O=None, allow_empty=False):
     """FS along the slip polyline *surface* ``[(x, y), ...]`` (strictly increasing x) from the

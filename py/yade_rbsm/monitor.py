@@ -21,8 +21,9 @@ Every *period* steps the PyRunner calls :meth:`Monitor.record`, which does ``plo
 ``plot.plots`` gets four panels against ``t``: the displacements, ``Ek``, ``unbalanced`` and the two
 joint counts. With *progress* (seconds of wall time, default 10) a line ``progress: step ...`` is
 printed at most that often, with the estimated wall time left when a target (:meth:`target`) is
-known. The PyRunner reaches the Monitor through a global of ``__main__`` (``_rbsm_monitor`` by
-default), since PyRunner commands run in the script's namespace.
+known. The PyRunner's command names this module and carries the Monitor's settings, so that a scene
+saved with it continues after ``O.load`` in a fresh process (the Monitor is made again at its first
+call there); the Monitor is also a global of ``__main__`` (``_rbsm_monitor`` by default).
 """
 import math
 import time
@@ -30,6 +31,16 @@ import time
 from . import omega
 
 __all__ = ["Monitor", "kinetic_energy", "joint_counts"]
+
+_MONITORS = {}  # PyRunner label -> the Monitor of this process
+
+
+def _record(label, ids, period, progress):
+    """The PyRunner's call: the Monitor of *label*, made again from its settings after O.load."""
+    m = _MONITORS.get(label)
+    if m is None:
+        m = Monitor(ids=ids, period=period, progress=progress, label=label, install=False, reset=False)
+    m.record()
 
 
 def kinetic_energy(O=None):
@@ -60,7 +71,7 @@ class Monitor:
     def __init__(self, ids=(), period=200, progress=10.0, name="_rbsm_monitor", label="rbsmMonitor",
                  install=True, reset=True):
         from yade import plot
-        self.ids = list(ids)
+        self.ids = [int(i) for i in ids]
         self.period = int(period)
         self.progress = progress
         self.name, self.label = name, label
@@ -72,6 +83,7 @@ class Monitor:
             plot.reset()
         dnames = ["d_%d" % i for i in self.ids] + ["dmax"]
         plot.plots = {"t": tuple(dnames), "t ": ("Ek",), "t  ": ("unbalanced",), "t   ": ("nSlipping", "nOpen")}
+        _MONITORS[label] = self
         if install:
             self.install()
 
@@ -82,7 +94,10 @@ class Monitor:
         from yade import O, wrapper
         setattr(__main__, self.name, self)
         engines = [e for e in O.engines if getattr(e, "label", "") != self.label]
-        pr = wrapper.PyRunner(command="%s.record()" % self.name, iterPeriod=self.period, label=self.label)
+        # the command names this module, not a global of the script: it runs again after O.load elsewhere
+        command = "__import__('yade_rbsm.monitor', fromlist=['_record'])._record(%r, %r, %d, %r)" % (
+            self.label, self.ids, self.period, self.progress)
+        pr = wrapper.PyRunner(command=command, iterPeriod=self.period, label=self.label)
         newton = [j for j, e in enumerate(engines) if getattr(e, "label", "") == "newton"
                   or type(e).__name__ == omega.LABEL_TYPES["newton"]]
         k = newton[0] if newton else len(engines)

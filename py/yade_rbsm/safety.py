@@ -48,8 +48,8 @@ the slope", a non-positive band) raises ValueError naming the problem.
 from .contact_safety import ContactFS, contact_fs, contact_fs_circle  # noqa: F401
 from .geometry import check_polyline, circle_through, point_polyline_distance  # noqa: F401
 from .le_bridge import StressField, fs_table, le_slope, limit_equilibrium_summary, stress_field, table2  # noqa: F401
-from .slip_surface import SlipSurface, probe_slipping_surface, slip_surface_fs, slipping_surface  # noqa: F401
+from .slip_surface import SlipSurface, SlipSurfaceFS, probe_slipping_surface, slip_surface_fs, slipping_surface  # noqa: F401
 
-__all__ = ["ContactFS", "contact_fs", "contact_fs_circle", "SlipSurface", "slipping_surface", "slip_surface_fs",
+__all__ = ["ContactFS", "contact_fs", "contact_fs_circle", "SlipSurface", "SlipSurfaceFS", "slipping_surface", "slip_surface_fs",
            "point_polyline_distance", "table2", "le_slope", "circle_through", "limit_equilibrium_summary",
            "fs_table", "check_polyline", "probe_slipping_surface", "stress_field", "StressField"]

@@ -5,6 +5,7 @@ contact forces and by Fellenius (:func:`slip_surface_fs`); see :mod:`yade_rbsm.s
 Import these from ``yade_rbsm.safety``."""
 import math
 from dataclasses import dataclass
+from typing import NamedTuple
 
 from . import omega
 from .checks import count, number
@@ -12,7 +13,7 @@ from .contact_safety import contact_fs
 from .geometry import interp_y, point_polyline_distance
 from .le_bridge import le_slope
 
-__all__ = ["SlipSurface", "slipping_surface", "probe_slipping_surface", "slip_surface_fs"]
+__all__ = ["SlipSurface", "SlipSurfaceFS", "slipping_surface", "probe_slipping_surface", "slip_surface_fs"]
 
 
 def _median_joint_length(O):
@@ -30,6 +31,22 @@ class SlipSurface:
     def __str__(self):
         return "slipping surface: %d joints, %.2f m, polyline %s" % (
             len(self.joints), self.length, " ".join("(%.2f, %.2f)" % p for p in self.polyline))
+
+    def __repr__(self):
+        (x0, y0), (x1, y1) = self.polyline[0], self.polyline[-1]
+        return "SlipSurface(%d joints, %.3g m, from (%.3g, %.3g) to (%.3g, %.3g))" % (len(self.joints), self.length, x0, y0, x1, y1)
+
+
+class SlipSurfaceFS(NamedTuple):
+    """What :func:`slip_surface_fs` returns; unpacks as (surface, contact, fellenius) like the tuple it was."""
+    surface: SlipSurface
+    contact: object  # contact_safety.ContactFS
+    fellenius: object  # limit_equilibrium.Result, the reason it failed (str), or None
+
+    def __repr__(self):
+        fel = self.fellenius
+        fel = ("Fellenius FS %.3f" % fel.fs) if hasattr(fel, "fs") else ("Fellenius: %s" % fel if fel else "no Fellenius")
+        return "SlipSurfaceFS(contact forces FS %.3f, %s; %r)" % (self.contact.fs, fel, self.surface)
 
 
 def _segments_distance(a, b):
@@ -219,8 +236,8 @@ def _extend_to_ground(poly, ground):
 
 
 def slip_surface_fs(surface=None, ground=None, material=None, g=9.81, n=50, O=None, tol=None, slope=None):
-    """FS along the surface of slipping joints: returns ``(SlipSurface, ContactFS, Fellenius
-    Result or str or None)``. *surface*: a SlipSurface (default: :func:`slipping_surface` now);
+    """FS along the surface of slipping joints: returns a :class:`SlipSurfaceFS` (surface, contact:
+    ContactFS, fellenius: Result or str or None), which unpacks as that tuple. *surface*: a SlipSurface (default: :func:`slipping_surface` now);
     with *ground* (ground polyline) and *material* (RbsmMat), also Fellenius along it (ends below
     the ground extended to it, module docstring), or along the limit_equilibrium.Slope *slope*
     (its ground and layers: e.g. the strength of the joints rather than of the blocks). *tol*: as in :func:`contact_fs`, default 0.1 x
@@ -246,4 +263,4 @@ def slip_surface_fs(surface=None, ground=None, material=None, g=9.81, n=50, O=No
             fel = le.fellenius_polyline(slope, _extend_to_ground(ss.polyline, [tuple(p) for p in slope.surface]), n)
         except ValueError as e:
             fel = str(e)
-    return ss, fs, fel
+    return SlipSurfaceFS(ss, fs, fel)

@@ -435,8 +435,9 @@ def settle(tol=1e-3, max_steps=50000, check=100, damping=0.7, progress=None, den
     properties after every *check* steps (:func:`apply_joint_sets`). Restores the previous damping and
     scaling. Returns (converged, steps, ratio). Under yade.mpy every rank calls it (yade_rbsm.mpi.run, and a collective ratio)."""
     from yade import O
-    from .checks import count, number
+    from .checks import count, flag, number
     tol = number("settle", "tol", tol, 0, low_open=True)
+    density_scaling = flag("settle", "density_scaling", density_scaling)
     max_steps, check = count("settle", "max_steps", max_steps), count("settle", "check", check)
     damping = number("settle", "damping", damping, 0, 1, high_open=True)
     from . import omega, mpi

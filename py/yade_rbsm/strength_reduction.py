@@ -44,7 +44,7 @@ columns that toppled while settling are a collapsed pile, not the slope to reduc
 every joint and material ``calibration.joint_strength(c/F, tanφ/F)`` of the soil's c, tanφ
 (*soil*), instead of dividing the joints' own. *png*: a path prefix; the blocks coloured by their
 displacement in the last stable and the first failed trial are drawn to ``<png>_stable.png`` and
-``<png>_failed.png`` (the mechanism at the bracket's ends). A failed trial also says how its moving
+``<png>_failed.png`` (the mechanism at the bracket's ends; a prefix ending in .png loses it). A failed trial also says how its moving
 blocks moved (``Trial.mechanism``, ``SRResult.mechanism`` for the bracket's failed end): sliding,
 toppling (blocks turning about their corners), or both. ``SRResult.warnings`` (printed when verbose)
 says where the bracket may be the criterion's rather than the slope's: a failed end that only did not
@@ -58,7 +58,7 @@ import time
 from dataclasses import dataclass, field
 from typing import List, Optional, Tuple
 
-from .checks import count, number
+from .checks import count, flag, number
 from . import omega
 
 __all__ = ["SRResult", "Trial", "strength_reduction", "trial", "reduce_strengths"]
@@ -293,6 +293,10 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     grow = number(where, "grow", grow, 1, low_open=True)
     rtol = number(where, "rtol", rtol, 0, low_open=True)
     max_trials = count(where, "max_trials", max_trials)
+    density_scaling = flag(where, "density_scaling", density_scaling)
+    reduce_tensile = flag(where, "reduce_tensile", reduce_tensile)
+    if png is not None and png.lower().endswith(".png"):  # a file name given for the prefix: x.png -> x_stable.png
+        png = png[:-4]
     mass_fraction = number(where, "mass_fraction", mass_fraction, 0, 1, high_open=True)
     reference_tol = number(where, "reference_tol", reference_tol, 0, low_open=True)
     if (calibration is None) != (soil is None):

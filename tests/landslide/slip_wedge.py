@@ -29,9 +29,12 @@ probe = safety.probe_slipping_surface(steps=300)
 it0 = O.iter
 O.run(300, True)
 # Fellenius with the strength of the plane (c = 0, phi), not of the bonded blocks
-ss, fs, fel = safety.slip_surface_fs(probe, slope=safety.le_slope(surface, c=0.0, phi=phi, density=2000))
+found = safety.slip_surface_fs(probe, slope=safety.le_slope(surface, c=0.0, phi=phi, density=2000))
+ss, fs, fel = found
+print(repr(found))
 print(ss)
 print(safety.table2(fs, fel if not isinstance(fel, str) else None, title="sliding wedge, surface of slipping joints"))
 print("RESULT " + json.dumps(dict(pattern=pattern, broken=nb, joints=nj, probe=probe.polyline, probe_iter=it0, 
                                   polyline=ss.polyline, n=len(ss.joints), fs=fs.fs, fel=getattr(fel, "fs", str(fel)),
-                                  plane=plane, closed=math.tan(phi) / math.tan(psi))))
+                                  plane=plane, closed=math.tan(phi) / math.tan(psi), repr=repr(found),
+                                  fs_attr=found.contact.fs)))

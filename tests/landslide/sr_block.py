@@ -16,6 +16,22 @@ O.bodies.append([yr.polygon2d([rot(-1, -1), rot(3, -1), rot(3, 0), rot(-1, 0)], 
                  yr.polygon2d([rot(0, 0), rot(2, 0), rot(2, 1), rot(0, 1)], mat)])
 ok, n, r = bonded_gravity_stage()
 pos0 = Vector3(O.bodies[1].state.pos)
+if sys.argv[2:3] == ["args"]:  # argv[3]: where the drawings go  # issue 37: what strength_reduction and settle leave and write, and their flags
+    import glob, json
+    from yade_rbsm import slope as sl
+    res = strength_reduction(start=1.0, grow=1.5, rtol=0.02, tol=1e-4, d_fail=2e-3, max_steps=1500, check=100,
+                             damping=0.7, density_scaling=True, png=os.path.join(sys.argv[3], "srm.png"))
+    out = dict(scaling=yr.time_stepper().densityScaling, pngs=sorted(os.path.basename(f) for f in glob.glob(
+        os.path.join(sys.argv[3], "srm*.png"))), errors={})
+    for name, call in (("settle", lambda: sl.settle(density_scaling="no", max_steps=10)),
+                       ("srm", lambda: strength_reduction(density_scaling="yes"))):
+        try:
+            call()
+        except ValueError as e:
+            out["errors"][name] = str(e)
+    out["scaling_after"] = yr.time_stepper().densityScaling
+    print("RESULT " + json.dumps(out))
+    sys.exit(0)
 if sys.argv[2:] == ["stop"]:  # a report of the plugin in a trial (here: any motion beyond 1e-4 of the inradius)
     yr.time_stepper().maxStepMotion = 1e-4
     try:

@@ -72,3 +72,6 @@ def test_found_surface_is_the_plane():
     assert r["broken"] >= 8 and r["n"] >= 8
     assert r["fs"] == pytest.approx(1.0, abs=0.02)
     assert r["fel"] == pytest.approx(r["closed"], rel=0.01)
+    # issue 37: a named result with a short repr (a bare tuple printed 30 lines of numpy repr)
+    assert r["fs_attr"] == r["fs"] and len(r["repr"].splitlines()) <= 3 and len(r["repr"]) < 400, r["repr"]
+    assert "FS" in r["repr"] and "Fellenius" in r["repr"], r["repr"]

@@ -77,3 +77,17 @@ def test_a_trial_stopped_by_the_plugin_says_which_and_what_came_before():
     assert "strength_reduction: trial F = 1.5 was stopped at step" in line and "min_area" in line, line
     assert "F = 1.0000: stable" in line, line  # the trials before it
     assert "yade-rbsm: ERROR: RbsmTimeStepper: body #1" in p.stderr, p.stderr[-2000:]
+
+
+def test_flags_are_checked_and_pngs_named_as_given(tmp_path):
+    """Issue 37: settle(density_scaling="no") ran with the scaling on ("no" is a true string), and
+    strength_reduction(png="x.png") wrote x.png_failed.png. The flags are now checked (True or False), a
+    .png prefix loses its suffix, and density scaling is off again after strength_reduction."""
+    import json
+    p = run_yade(os.path.join(HERE, "sr_block.py"), "20", "args", str(tmp_path), cwd=HERE, timeout=120)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    r = json.loads([l for l in p.stdout.splitlines() if l.startswith("RESULT ")][0][7:])
+    assert r["scaling"] is False and r["scaling_after"] is False, r
+    assert r["pngs"] == ["srm_failed.png", "srm_stable.png"], r
+    assert "density_scaling must be True or False (got 'no')" in r["errors"]["settle"], r
+    assert "density_scaling must be True or False (got 'yes')" in r["errors"]["srm"], r

@@ -1,0 +1,34 @@
+"""A scene saved with the package's Monitor continues after O.load in a fresh process (issue 37). Before:
+the PyRunner's command named a global of the script that made it (``_rbsm_monitor.record()``), so the
+loaded run stopped at once with NameError, though the README promises that engine state is saved."""
+from yaderun import run_ok
+
+BUILD = r"""
+from yade_rbsm import polygon2d, engines
+from yade_rbsm.monitor import Monitor
+rock = RbsmMat(density=2000, young=1e8)
+O.materials.append(rock)
+O.bodies.append(polygon2d([(-5, -1), (5, -1), (5, 0), (-5, 0)], rock, fixed=True))
+O.bodies.append(polygon2d([(0, 0.001), (1, 0.001), (1, 1), (0, 1)], rock))
+O.engines = engines()
+mon = Monitor(ids=[1], period=50, progress=None)
+O.run(200, True)
+from yade import plot
+O.save("scene.yade.gz")
+report(rows=len(plot.data["t"]), labels=[getattr(e, "label", "") for e in O.engines])
+"""
+
+LOAD = r"""
+O.load("scene.yade.gz")
+O.run(200, True)
+from yade import plot
+report(iter=O.iter, rows=len(plot.data.get("t", [])), d1=plot.data["d_1"][-1] if "d_1" in plot.data else None)
+"""
+
+
+def test_a_saved_monitor_continues_after_load(tmp_path):
+    (a,) = run_ok(BUILD, workdir=str(tmp_path))
+    assert a["rows"] >= 3 and "rbsmMonitor" in a["labels"], a
+    (b,) = run_ok(LOAD, workdir=str(tmp_path))
+    assert b["iter"] == 400, b
+    assert b["rows"] >= 3 and b["d1"] is not None, b  # it records again, the monitored block's displacement too
