@@ -310,7 +310,7 @@ newton = [e for e in O.engines if type(e).__name__ == "NewtonIntegrator"][0]
 newton.damping = 0.0
 nsteps = int(args.time / O.dt)  # O.dt may change a little (time stepper)
 if mon:
-    mon.target(nsteps)
+    mon.target(time=args.time)  # by simulated time: the stepper changes O.dt on the way
 nchunks = 3
 mobile = [b.id for b in sb.free]
 t_dyn0 = O.time

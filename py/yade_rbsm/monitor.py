@@ -77,7 +77,7 @@ class Monitor:
         self.name, self.label = name, label
         self._last_print = time.time()
         self._t0 = time.time()
-        self._target = None  # (iter0, iter_end, wall0)
+        self._target = None  # ('t' or 'i', start, end, wall0): simulated time or steps
         self.marks = []  # (t, label): stage boundaries drawn in the saved plot
         if reset:
             plot.reset()
@@ -110,10 +110,17 @@ class Monitor:
         from yade import O
         self.marks.append((O.time, label))
 
-    def target(self, n_steps):
-        """Announce that the next O.run will take *n_steps* (for the progress line's estimate)."""
+    def target(self, n_steps=None, time=None):
+        """Announce the next stage for the progress line's estimate: *time* [s] of simulated time from now
+        (the measure that holds while the time stepper changes O.dt), or *n_steps* steps."""
         from yade import O
-        self._target = (O.iter, O.iter + int(n_steps), time.time())
+        import time as wall
+        if (n_steps is None) == (time is None):
+            raise ValueError("Monitor.target: give n_steps or time")
+        if time is not None:
+            self._target = ("t", O.time, O.time + float(time), wall.time())
+        else:
+            self._target = ("i", O.iter, O.iter + int(n_steps), wall.time())
 
     def record(self):
         from yade import O, plot
@@ -133,10 +140,12 @@ class Monitor:
         if self.progress is not None and now - self._last_print >= self.progress:
             self._last_print = now
             eta = ""
-            if self._target and self._target[1] > self._target[0] and O.iter > self._target[0]:
-                i0, i1, w0 = self._target
-                frac = (O.iter - i0) / float(i1 - i0)
-                eta = "  %3.0f%%, about %.0f s left" % (100 * frac, (now - w0) * (1 - frac) / max(frac, 1e-9))
+            if self._target:
+                kind, a, b, w0 = self._target
+                x = O.time if kind == "t" else O.iter
+                if b > a and x > a:
+                    frac = min(1.0, (x - a) / float(b - a))  # (a stage that runs past its target: 100 %, not 226 %)
+                    eta = "  %3.0f%%, about %.0f s left" % (100 * frac, (now - w0) * (1 - frac) / max(frac, 1e-9))
             print("progress: step %d  t = %.4f s  dmax %.3e m  Ek %.3e J  unbalanced %.2e  slipping %d  open %d "
                   "(of %d joints)  %.0f s wall%s" % (O.iter, O.time, dmax, ek, ub, ns, no, n, now - self._t0, eta),
                   flush=True)
