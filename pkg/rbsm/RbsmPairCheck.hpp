@@ -14,8 +14,8 @@ public:
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RbsmPairCheck, GlobalEngine,
 		"No silent pass-through: a pair of bodies, one of them a :yref:`Polygon2D`, whose bounds overlap but for whose shapes "
 		"the :yref:`InteractionLoop` has no :yref:`IGeomFunctor` (a block next to a :yref:`Box`, or an Ig2 functor missing "
-		"from a hand-written engine list) never interacts: the two pass through each other. This engine (last in "
-		"yade_rbsm.engines() and mixed_engines()) looks for such pairs after every step and reports each pair of shape "
+		"from a hand-written engine list) never interacts: the two pass through each other. This engine (before "
+		"NewtonIntegrator in yade_rbsm.engines() and mixed_engines()) looks for such pairs at every step and reports each pair of shape "
 		"classes once, naming the bodies and the functor that is missing; with :yref:`stopRun<RbsmPairCheck.stopRun>` the "
 		"run stops after that step. Only pairs with a bound on both bodies are seen: a shape without a bound functor in "
 		"the collider collides with nothing.\n\n"

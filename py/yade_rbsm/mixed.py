@@ -16,8 +16,8 @@ def mixed_engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2
             [Law2_RbsmGeom_RbsmPhys_MohrCoulomb,                     # block joints, also on walls and facets
              Law2_ScGeom_FrictPhys_CundallStrack(sphericalBodies=False)])   # spheres (true torques on blocks)
         RbsmTimeStepper
-        NewtonIntegrator(gravity, damping)
         RbsmPairCheck                 # blocks next to shapes no functor handles (a Box): reported, run stopped
+        NewtonIntegrator(gravity, damping)   # last, as in YADE's scripts
 
     The arguments are engines()'s. The time stepper counts the block joints only (also those on walls and
     facets; sphere contacts follow YADE's own laws), so when O.bodies holds spheres O.dt is set here to
@@ -57,6 +57,6 @@ def mixed_engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2
         ),
         wrapper.RbsmTimeStepper(safetyFactor=safety, setDt=True, maxDt=O.dt if spheres else float("inf"), interval=interval,
                                 label="timeStepper"),
-        wrapper.NewtonIntegrator(gravity=gravity, damping=damping, label="newton"),
         wrapper.RbsmPairCheck(label="pairCheck"),
+        wrapper.NewtonIntegrator(gravity=gravity, damping=damping, label="newton"),  # last, as in YADE's scripts
     ]

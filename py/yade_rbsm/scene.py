@@ -16,8 +16,8 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
                         [Ip2_RbsmMat_RbsmMat_RbsmPhys],          # Kawai springs, joint strength
                         [Law2_RbsmGeom_RbsmPhys_MohrCoulomb])    # tractions, Mohr-Coulomb, tension cut-off
         RbsmTimeStepper                                          # stability limit of the explicit step
-        NewtonIntegrator(gravity, damping)                       # central differences
         RbsmPairCheck                                            # no silent pass-through
+        NewtonIntegrator(gravity, damping)                       # central differences, last (label newton)
 
     *damping* is NewtonIntegrator's non-viscous (Cundall) damping, for quasi-static stages;
     *contact_damping* the viscous damping ratio of the joints; *set_dt*: the time stepper sets O.dt
@@ -39,8 +39,9 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     numbers bit for bit (and so does a run continued after a save/load), at the cost of a sort every
     step; otherwise the sums follow the container's order and the runs differ by round-off, which
     a chaotic or slipping scene amplifies.
-    Labels: collider, ig2, ip2, law, timeStepper, newton, pairCheck (RbsmPairCheck, last: reports blocks next to
-    shapes that no functor handles), and rbsmMpiSync. A Polygon2D body without RbsmMat in O.bodies raises ValueError.
+    Labels: collider, ig2, ip2, law, timeStepper, pairCheck (RbsmPairCheck: reports blocks next to shapes that
+    no functor handles), rbsmMpiSync, and newton: NewtonIntegrator is last, YADE's habit (``O.engines[-1].damping``,
+    engines appended after it see the step's positions). A Polygon2D body without RbsmMat in O.bodies raises ValueError.
     Periodic cells (O.periodic) are not supported: ValueError.
     """
     import sys
@@ -97,8 +98,8 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
         loop,
         stepper,
     ] + sync + [
-        wrapper.NewtonIntegrator(gravity=gravity, damping=damping, label="newton"),
         wrapper.RbsmPairCheck(label="pairCheck"),  # blocks next to shapes no functor handles: reported, run stopped
+        wrapper.NewtonIntegrator(gravity=gravity, damping=damping, label="newton"),  # last, as in YADE's scripts
     ]
 
 

@@ -28,7 +28,7 @@ report(dead=O.engines[-1].dead, iter=O.iter, index=len(O.engines) - 1)
 """ % (str(tmp_path / "r-"), recorders), workdir=str(tmp_path))
     assert p.returncode == 0, "yade exited with %d (crash)\n%s" % (p.returncode, p.stderr[-3000:])
     (r,) = results(p)
-    # the recorder is the last engine: after the 6 of engines() (RbsmPairCheck, issue 17, is the 6th)
+    # the recorder is the last engine: after the 6 of engines() (NewtonIntegrator is the 6th)
     assert r == {"dead": True, "iter": 5, "index": 6}
     assert "VTKRecorder (O.engines[%d]) with recorders" % r["index"] in p.stderr and "switched off" in p.stderr
 

@@ -15,7 +15,7 @@ import os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from yade import utils
 from _common import params, emit
-from yade_rbsm import polygon2d, engines, mixed_engines
+from yade_rbsm import polygon2d, engines, mixed_engines, omega
 
 p = params()
 case = p["case"]
@@ -39,17 +39,17 @@ if case == "hand_frict_before":
     except ValueError as e:
         out["error"] = str(e)
 elif case == "hand_frict_after":
-    O.engines = engines() if p.get("pairCheck", True) else engines()[:-1]
+    O.engines = [e for e in engines() if p.get("pairCheck", True) or e.label != "pairCheck"]
     O.dt = 1e-5
     O.bodies.append(hand_block())
     O.run(2000, True)
 elif case == "box":
     O.bodies.append(utils.box((0.5, 0.6, 0), (0.5, 0.5, 0.5), material=frict))
     O.engines = mixed_engines()
-    O.engines[-1].stopRun = p.get("stopRun", True)
+    omega.engine('pairCheck').stopRun = p.get("stopRun", True)
     O.dt = 1e-4
     O.run(10000, True)
-    out["reported"] = list(O.engines[-1].reported)
+    out["reported"] = list(omega.engine('pairCheck').reported)
     out["y"] = O.bodies[1].state.pos[1]
 elif case == "no_ig2":
     s = utils.sphere((0.5, 0.3, 0), 0.2, material=frict)
@@ -60,7 +60,7 @@ elif case == "no_ig2":
                  NewtonIntegrator(gravity=(0, -9.81, 0)), RbsmPairCheck()]
     O.dt = 1e-4
     O.run(2000, True)
-    out["reported"] = list(O.engines[-1].reported)
+    out["reported"] = list(omega.engine('pairCheck').reported)
 elif case == "no_ip2":
     s = utils.sphere((0.5, 0.25, 0), 0.2, material=frict)  # 5 cm above the block
     s.state.blockedDOFs = "zXY"
@@ -71,7 +71,7 @@ elif case == "no_ip2":
                  NewtonIntegrator(gravity=(0, -9.81, 0)), RbsmPairCheck()]
     O.dt = 1e-4
     O.run(5000, True)
-    out["reported"] = list(O.engines[-1].reported)
+    out["reported"] = list(omega.engine('pairCheck').reported)
     out["y"] = s.state.pos[1]
 out["iter"] = O.iter
 emit(out)

@@ -29,7 +29,7 @@ for kn, L, H, psi_deg, nip in p["cases"]:
     x0 = b.state.pos[0]
     W, psi = b.state.mass * g, radians(psi_deg)
     fmax, fmin, lifted, t0 = 0.0, 1e9, 0, O.time
-    newton = O.engines[-2]
+    newton = O.engines[-1]
     while O.time - t0 < ramp + hold:
         a = psi * min(1.0, (O.time - t0) / ramp)
         newton.gravity = (g * sin(a), -g * cos(a), 0)
