@@ -68,7 +68,7 @@ __all__ = ["SRResult", "Trial", "strength_reduction", "trial", "reduce_strengths
 class Trial:
     F: float
     failed: bool
-    reason: str  # "converged", "runaway", "not converged"
+    reason: str  # "converged", "runaway", "creeping" (a steady mechanism, see trial), "not converged"
     steps: int
     ratio: float
     dmax: float
@@ -199,6 +199,25 @@ def _mechanism(ids, start_ori, d, d_fail):
     return ("sliding" if rocking < 0.3 else "toppling" if rocking > 0.7 else "sliding and rotating"), rocking
 
 
+def _trend(history):
+    """"creeping" when the last quarter of the checks moved the monitored mass (mass-weighted mean
+    displacement) at least 0.8 x as much as the quarter before, with an unbalanced-force ratio at least
+    half of the quarter before's: a mechanism moving at a steady or growing rate (local damping caps
+    its acceleration). "dying" when either decays; "unclear" with fewer than 8 checks. A stable slope
+    still settling slowly has both decaying; a creeping one neither."""
+    n = len(history)
+    if n < 8:
+        return "unclear"
+    q = n // 4
+    late = history[-1][0] - history[-1 - q][0]
+    before = history[-1 - q][0] - history[-1 - 2 * q][0]
+    ratio_now = sum(r for _, r in history[-q:]) / q
+    ratio_before = sum(r for _, r in history[-2 * q:-q]) / q
+    if late > 0 and late >= 0.8 * before and ratio_now >= 0.5 * ratio_before:
+        return "creeping"
+    return "dying"
+
+
 def _trial_args(where, F, tol, d_fail, max_steps, check, damping):
     return (number(where, "F", F, 0, low_open=True), number(where, "tol", tol, 0, low_open=True),
             number(where, "d_fail", d_fail, 0, low_open=True), count(where, "max_steps", max_steps),
@@ -206,14 +225,21 @@ def _trial_args(where, F, tol, d_fail, max_steps, check, damping):
 
 
 def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=100, damping=0.7,
-          reduce_tensile=False, verbose=False, mass_fraction=0.01, png=None):
+          reduce_tensile=False, verbose=False, mass_fraction=0.01, png=None, patience=4):
     """One trial at factor *F* from the state saved under *mark* (see the module docstring).
-    Returns a :class:`Trial`; a failed one says how its moving blocks moved (Trial.mechanism)."""
+    Returns a :class:`Trial`; a failed one says how its moving blocks moved (Trial.mechanism).
+
+    A trial neither converged nor run away after *max_steps* is judged by its history, as UDEC and FLAC
+    users read theirs (:func:`_trend`): one whose motion dies out runs on (up to *patience* x
+    *max_steps* in all: "converged" if it gets there), one whose blocks keep moving at an undiminished
+    rate under an undiminished unbalanced force is a mechanism, failed as "creeping"; only what is still
+    undecided then is "not converged" (and warned about)."""
     from yade import O, Quaternion, Vector3
     from .scene import advance
     from .slope import unbalanced_ratio
     F, tol, d_fail, max_steps, check, damping = _trial_args("trial", F, tol, d_fail, max_steps, check, damping)
     mass_fraction = number("trial", "mass_fraction", mass_fraction, 0, 1, high_open=True)
+    patience = count("trial", "patience", patience)
     w0 = time.time()
     O.loadTmp(mark)
     omega.switch_off_pyrunners(O)
@@ -230,8 +256,10 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     local = []
     from .slope_scene import apply_joint_sets, joint_sets
     sets = joint_sets() if ref.calibration is None else []  # contacts made along a joint set get its strength
-    while steps < max_steps:
-        n = min(check, max_steps - steps)
+    history = []  # (mass-weighted mean displacement, unbalanced ratio) at every check
+    budget = max_steps
+    while steps < budget:
+        n = min(check, budget - steps)
         advance(n)
         steps += n
         if sets:
@@ -249,6 +277,14 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
         if below >= 2:
             failed, reason = False, "converged"
             break
+        history.append((sum(mass[i] * d[i] for i in ids) / total, ratio))
+        if steps >= budget:
+            trend = _trend(history)
+            if trend == "creeping":
+                failed, reason = True, "creeping"
+                break
+            if budget < patience * max_steps:  # dying out, or not clear yet: run on
+                budget = min(patience * max_steps, budget + max_steps)
     t = Trial(F, failed, reason, steps, ratio, dmax, time.time() - w0, moving, sorted(local))
     if failed:
         t.mechanism, t.rocking = _mechanism(ids, start_ori, d, d_fail)
@@ -269,7 +305,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
 def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None, tol=1e-4, d_fail=0.05,
                        max_steps=5000, check=100, damping=0.7, reduce_tensile=False, verbose=True,
                        mark="rbsm_srm_reference", density_scaling=False, mass_fraction=0.01, reference_tol=0.5,
-                       calibration=None, soil=None, png=None, reference_rotation=0.2):
+                       calibration=None, soil=None, png=None, reference_rotation=0.2, patience=4):
     """Factor of safety by strength reduction on the current scene (see the module docstring).
     *density_scaling*: RbsmTimeStepper.densityScaling in every trial (fewer steps to the same
     equilibrium; restored at the end).
@@ -277,7 +313,8 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     *ids*: monitored blocks for the runaway criterion (default: all free blocks). Returns an
     :class:`SRResult`; raises RuntimeError if no bracket is found within *max_trials* trials.
     *mass_fraction*, *reference_tol*, *calibration* with *soil* = (c [Pa], φ [rad]) and *png*: see
-    the module docstring. *reference_rotation* [rad]: the largest rotation of a monitored block since
+    the module docstring. *patience*: a trial still undecided at *max_steps* is judged by its history
+    and runs on while its motion dies out, up to *patience* x *max_steps* (:func:`trial`). *reference_rotation* [rad]: the largest rotation of a monitored block since
     it was built (State.refOri) that the reference state may have; a slope whose blocks toppled or
     tumbled while settling is not the slope to reduce: ValueError naming the block, when the blocks
     rotated more weigh more than *mass_fraction* of the monitored mass (fewer are reported as local;
@@ -340,10 +377,12 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
               "ratio %.2e): FS < 1, or not settled (strengths changed since settle, e.g. set_joint_strength: settle "
               "again)" % r0, flush=True)
     trials = []
+    patience = count(where, "patience", patience)
     kw = dict(ids=ids, tol=tol, d_fail=d_fail, max_steps=max_steps, check=check, damping=damping,
-              reduce_tensile=reduce_tensile, verbose=verbose, mass_fraction=mass_fraction)
-    crit = ("failure: blocks displaced > %g m weigh > %g %% of the monitored mass, or unbalanced-force ratio not < %g "
-            "within %d steps (damping %g)" % (d_fail, 100 * mass_fraction, tol, max_steps, damping))
+              reduce_tensile=reduce_tensile, verbose=verbose, mass_fraction=mass_fraction, patience=patience)
+    crit = ("failure: blocks displaced > %g m weigh > %g %% of the monitored mass, or the monitored mass creeping at an "
+            "undiminished rate after %d steps, or unbalanced-force ratio not < %g within %d steps (damping %g)"
+            % (d_fail, 100 * mass_fraction, max_steps, tol, patience * max_steps, damping))
     pngs = {}
 
     def run(F):
@@ -399,7 +438,7 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
         stepper = time_stepper()  # (the loaded scene's)
         if stepper is not None:
             stepper.densityScaling = old_scaling
-    result = SRResult(0.5 * (lo + hi), lo, hi, trials, crit, r0, _warnings(trials, lo, hi, d_fail, max_steps))
+    result = SRResult(0.5 * (lo + hi), lo, hi, trials, crit, r0, _warnings(trials, lo, hi, d_fail, patience * max_steps))
     if verbose:
         for w in result.warnings:
             print("  strength reduction: WARNING: " + w, flush=True)
@@ -414,7 +453,7 @@ def _warnings(trials, lo, hi, d_fail, max_steps):
     t_hi = next((t for t in trials if t.F == hi and t.failed), None)
     t_lo = next((t for t in trials if t.F == lo and not t.failed), None)
     if t_hi is not None and t_hi.reason == "not converged" and t_hi.dmax < d_fail:
-        out.append("the failed end F = %.4f only did not converge within max_steps = %d (unbalanced ratio %.2e, "
+        out.append("the failed end F = %.4f only did not converge within %d steps (patience x max_steps; unbalanced ratio %.2e, "
                    "largest displacement %.3g m < d_fail = %g m): nothing ran away, and a slope still settling "
                    "slowly fails the same way; a longer max_steps may raise the FS"
                    % (t_hi.F, max_steps, t_hi.ratio, t_hi.dmax, d_fail))

@@ -16,6 +16,7 @@ from yade_rbsm import slope as sl
 from yade_rbsm.strength_reduction import strength_reduction
 
 phi, max_steps = math.radians(float(sys.argv[1])), int(sys.argv[2])
+patience = int(sys.argv[3]) if len(sys.argv) > 3 else 4
 rho, g, al = 2600.0, 9.81, math.radians(13.5)
 xn, b, a = 34.0, 2.0, 1.0
 surface = [(0, 3), (4, 3), (12, 17), (xn, 17)]
@@ -34,7 +35,7 @@ ok, steps, ratio = sl.settle(tol=1e-4, max_steps=60000, check=200, density_scali
 rot = max(abs((O.bodies[k.id].state.refOri.conjugate() * O.bodies[k.id].state.ori).toAxisAngle()[1]) for k in sb.free)
 print("SETTLED %s %d %.3g rotation %.4f" % (ok, steps, ratio, rot))
 try:
-    r = strength_reduction(start=1.0, grow=1.2, rtol=0.01, density_scaling=True, max_steps=max_steps, check=200,
+    r = strength_reduction(start=1.0, grow=1.2, rtol=0.01, density_scaling=True, max_steps=max_steps, patience=patience, check=200,
                            d_fail=0.1, verbose=False)
 except ValueError as e:
     print("REFUSED %s" % e)

@@ -1,0 +1,227 @@
+"""``slope.fos()``: the factor of safety of the current scene in one call, with the other estimates
+beside it and a stated design value (UDEC's ``SOLVE fos``, with the answer explained).
+
+What it runs, from the current (settled) state, which it leaves as it found it:
+
+1. **Strength reduction** (:func:`yade_rbsm.strength_reduction.strength_reduction`) with defaults
+   scaled to the slope: the runaway displacement ``d_fail`` is 5 % of the median block size, a trial's
+   step budget follows the time a wave takes to cross the slope, and a trial still undecided at its
+   budget is judged by its history (creeping: failed; dying out: runs on). Its bracket ends are then
+   set by a mechanism or by equilibrium, not by a step budget; what is left undecided is a warning.
+2. **The surface of slipping joints** at the failed end of the bracket (a probe run at the reduced
+   strength, then the state restored) and the factor of safety from the contact forces along it at the
+   current strengths (:func:`yade_rbsm.safety.slip_surface_fs`).
+3. For a continuum cut into blocks, with the builder's blocks (*sb*, a SlopeBlocks): **Bishop's critical
+   circle** of limit equilibrium on the same ground with the blocks' material (for jointed rock that
+   material is the intact rock's, and the circle means nothing: not run unless asked).
+
+The design value depends on the kind of slope: a **jointed rock** slope (bricks, columns, joint sets:
+the joints are the rock mass's) is what rigid blocks model: strength reduction. A **continuum cut into
+blocks** (Voronoi: a soil or a weak rock mass) is not: a band must zig-zag along rigid faces, and the
+strength-reduction factor of safety is unconservative by 65-94 % (docs/slope_factor_of_safety.md) until
+blocks are deformable; the design value is then limit equilibrium's, and it says so.
+"""
+import json
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Dict, List
+
+from .checks import count, flag, number
+
+__all__ = ["FosResult", "fos"]
+
+JOINTED, CONTINUUM = "jointed rock", "continuum cut into blocks"
+
+
+@dataclass
+class FosResult:
+    """What :func:`fos` found: ``fs`` the design value and ``method`` the estimate it comes from,
+    ``warnings`` (empty when the answer is conclusive), ``estimates`` {name: {"fs": value or None,
+    "note": str}}, ``recommendation`` (why this value), ``strength_reduction`` (the SRResult),
+    ``settings`` (what ran)."""
+    fs: float
+    method: str
+    kind: str
+    warnings: List[str] = field(default_factory=list)
+    estimates: Dict[str, dict] = field(default_factory=dict)
+    recommendation: str = ""
+    settings: Dict[str, object] = field(default_factory=dict)
+    wall: float = 0.0
+    strength_reduction: object = None
+
+    @property
+    def conclusive(self):
+        return not self.warnings
+
+    def __repr__(self):
+        return "FosResult(fs=%.3f by %s, %s, %s; %d other estimates)" % (
+            self.fs, self.method, self.kind, "conclusive" if self.conclusive else "%d warning(s)" % len(self.warnings),
+            len(self.estimates) - 1)
+
+    def as_dict(self):
+        sr = self.strength_reduction
+        trials = [dict(F=t.F, failed=t.failed, reason=t.reason, steps=t.steps, dmax=t.dmax, mechanism=t.mechanism)
+                  for t in (sr.trials if sr is not None else [])]
+        return dict(fs=self.fs, method=self.method, kind=self.kind, conclusive=self.conclusive, warnings=self.warnings,
+                    estimates=self.estimates, recommendation=self.recommendation, settings=self.settings,
+                    wall=self.wall, trials=trials)
+
+    def to_json(self, path=None):
+        """The result as JSON (written to *path* if given); returns the text."""
+        text = json.dumps(self.as_dict(), indent=1, default=str)
+        if path:
+            with open(path, "w") as f:
+                f.write(text + "\n")
+        return text
+
+    def to_markdown(self, path=None):
+        """A report: the design value and why, the estimates side by side, the strength-reduction trials,
+        the warnings (written to *path* if given); returns the text."""
+        out = ["# Factor of safety", "",
+               "**FS = %.3f** (%s), a %s slope. %s" % (self.fs, self.method, self.kind, self.recommendation), "",
+               "| method | FS | note |", "|---|---|---|"]
+        for name, e in self.estimates.items():
+            out.append("| %s | %s | %s |" % (name, "-" if e["fs"] is None else "%.3f" % e["fs"], e["note"]))
+        sr = self.strength_reduction
+        if sr is not None:
+            out += ["", "Strength-reduction trials (%s):" % sr.criterion, "",
+                    "| F | result | reason | steps | max displacement [m] | mechanism |", "|---|---|---|---|---|---|"]
+            out += ["| %.4f | %s | %s | %d | %.3g | %s |" % (t.F, "failed" if t.failed else "stable", t.reason, t.steps,
+                                                           t.dmax, t.mechanism or "") for t in sr.trials]
+        out += ["", "Warnings: " + ("none (conclusive)" if not self.warnings else "")]
+        out += ["- " + w for w in self.warnings]
+        out += ["", "Settings: " + ", ".join("%s = %s" % kv for kv in sorted(self.settings.items())),
+                "", "%.1f s wall." % self.wall]
+        text = "\n".join(out) + "\n"
+        if path:
+            with open(path, "w") as f:
+                f.write(text)
+        return text
+
+
+def _kind(sb, kind):
+    if kind is not None:
+        if kind not in (JOINTED, CONTINUUM):
+            raise ValueError("fos: kind must be %r or %r (got %r)" % (JOINTED, CONTINUUM, kind))
+        return kind, "given"
+    pattern = getattr(sb, "pattern", None)
+    if pattern == "voronoi":
+        return CONTINUUM, "Voronoi blocks"
+    if pattern is not None:
+        return JOINTED, "%s blocks" % pattern
+    return JOINTED, "assumed (no SlopeBlocks given: pass sb= or kind=)"
+
+
+def _scale(ids):
+    """(median block size [m], the slope's extent [m], P-wave speed [m/s]) of the free blocks."""
+    from yade import O
+    sizes = sorted(2 * O.bodies[i].shape.circumradius for i in ids)
+    xs = [O.bodies[i].state.pos[0] for i in ids]
+    ys = [O.bodies[i].state.pos[1] for i in ids]
+    extent = max(max(xs) - min(xs), max(ys) - min(ys)) + sizes[-1]
+    speeds = [math.sqrt(m.young / m.density) for m in {O.bodies[i].material for i in ids}
+              if type(m).__name__ == "RbsmMat" and m.young > 0 and m.density > 0]
+    return sizes[len(sizes) // 2], extent, max(speeds) if speeds else float("nan")
+
+
+def fos(sb=None, kind=None, d_fail=None, max_steps=None, patience=4, tol=1e-4, rtol=0.01, probe=True,
+        circle=None, density_scaling=False, verbose=False):
+    """The factor of safety of the current scene (module docstring): a :class:`FosResult` with ``fs``,
+    ``warnings`` (empty when conclusive), the other ``estimates`` and ``to_json()``, ``to_markdown()``.
+
+    *sb*: the SlopeBlocks the scene was built from (its pattern gives the kind of slope, its ground the
+    limit-equilibrium comparison); *kind*: "jointed rock" or "continuum cut into blocks", to say it
+    yourself. *d_fail* [m] (default 5 % of the median block size), *max_steps* (default: 20 wave
+    crossings of the slope at the current O.dt, 2000 to 50 000), *patience*, *tol*, *rtol*,
+    *density_scaling*: strength reduction's. *probe*: also the surface of slipping joints; *circle*: also
+    Bishop's critical circle (with *sb*; default: for a continuum only, since for jointed rock the
+    blocks' material is the intact rock's). The scene is left as it was."""
+    from yade import O
+    from .strength_reduction import strength_reduction, _free_ids
+    w0 = time.time()
+    kind, why_kind = _kind(sb, kind)
+    patience = count("fos", "patience", patience)
+    tol, rtol = number("fos", "tol", tol, 0, low_open=True), number("fos", "rtol", rtol, 0, low_open=True)
+    probe = flag("fos", "probe", probe)
+    circle = (kind == CONTINUUM) if circle is None else flag("fos", "circle", circle)
+    density_scaling = flag("fos", "density_scaling", density_scaling)
+    ids = _free_ids()
+    if not ids:
+        raise ValueError("fos: no free blocks (build and settle a slope first)")
+    size, extent, c = _scale(ids)
+    d_fail = 0.05 * size if d_fail is None else number("fos", "d_fail", d_fail, 0, low_open=True)
+    if max_steps is None:
+        crossing = extent / (c * O.dt) if math.isfinite(c) and O.dt > 0 else 100.0
+        max_steps = int(min(50000, max(2000, 20 * crossing)))
+    max_steps = count("fos", "max_steps", max_steps)
+    check = max(50, min(200, max_steps // 40))
+    settings = dict(d_fail=round(d_fail, 6), max_steps=max_steps, patience=patience, tol=tol, rtol=rtol, check=check,
+                    density_scaling=density_scaling, blocks=len(ids), kind_from=why_kind)
+    sr = strength_reduction(start=1.0, grow=1.25, rtol=rtol, tol=tol, d_fail=d_fail, max_steps=max_steps, check=check,
+                            damping=0.7, density_scaling=density_scaling, patience=patience, verbose=verbose)
+    warnings = list(sr.warnings)
+    estimates = {"strength reduction": dict(fs=sr.fs, note="bracket [%.4f stable, %.4f failed], %d trials%s" % (
+        sr.lo, sr.hi, len(sr.trials), (", failing by " + sr.mechanism) if sr.mechanism else ""))}
+    if probe:
+        estimates["contact forces, surface of slipping joints"] = _found_surface(sr, sb)
+    if circle and sb is not None:
+        estimates["Bishop, critical circle (blocks' material)"] = _bishop(sb, ids)
+    fs, method = sr.fs, "strength reduction"
+    if kind == JOINTED:
+        recommendation = ("For jointed rock the joints are the rock mass's discontinuities and rigid blocks model "
+                          "them: the design value is strength reduction's.")
+    else:
+        b = estimates.get("Bishop, critical circle (blocks' material)", {}).get("fs")
+        recommendation = ("Rigid blocks cut from a continuum overestimate its strength (a shear band must follow "
+                          "their faces: +65 to +94 % on Griffiths & Lane's slope, docs/slope_factor_of_safety.md); ")
+        if b is not None:
+            fs, method = b, "Bishop, critical circle (blocks' material)"
+            recommendation += "the design value is limit equilibrium's, strength reduction's is shown beside it."
+        else:
+            warnings.append("a continuum cut into blocks without limit equilibrium to compare (give sb=, the "
+                            "SlopeBlocks): strength reduction's value is unconservative")
+            recommendation += "without limit equilibrium (no sb=), strength reduction's value is given, and warned about."
+    if verbose:
+        print("fos: FS = %.3f by %s; %s" % (fs, method, recommendation), flush=True)
+    return FosResult(fs, method, kind, warnings, estimates, recommendation, settings, time.time() - w0, sr)
+
+
+def _found_surface(sr, sb):
+    """The contact-force FS along the joints that slip at the failed end's strength (probe, state restored)."""
+    from yade import O
+    from .safety import probe_slipping_surface, slip_surface_fs
+    from .strength_reduction import _Reference, reduce_strengths
+    mark = "rbsm_fos_probe"
+    O.saveTmp(mark)
+    try:
+        reduce_strengths(sr.hi, _Reference())
+        surface = probe_slipping_surface(steps=300)
+    finally:
+        O.loadTmp(mark)
+    if surface is None or len(surface.polyline) < 2:
+        return dict(fs=None, note="no joint slipped in a 300-step probe at F = %.4f" % sr.hi)
+    try:
+        r = slip_surface_fs(surface)
+    except ValueError as e:
+        return dict(fs=None, note=str(e))
+    return dict(fs=r.contact.fs, note="%d joints, %.3g m, found at F = %.4f, forces of the current state" % (
+        len(surface.joints), surface.length, sr.hi))
+
+
+def _bishop(sb, ids):
+    from yade import O
+    from . import limit_equilibrium as le
+    from .safety import le_slope
+    mat = O.bodies[ids[0]].material
+    try:
+        slope = le_slope(sb.surface, mat)
+        xs = [p[0] for p in sb.surface]
+        ys = [p[1] for p in sb.surface]
+        H = max(ys) - sb.base
+        r = le.critical_circle(slope, x_range=(min(xs), max(xs)), y_range=(max(ys), max(ys) + 1.5 * H), nx=9, ny=9,
+                               r_range=(0.3 * H, 3 * H), nr=9, method="bishop", base=sb.base, refine=1)
+    except ValueError as e:
+        return dict(fs=None, note=str(e))
+    return dict(fs=r.fs, note="c %.3g kPa, phi %.1f deg of the blocks' material, %s" % (
+        mat.cohesion / 1e3, math.degrees(mat.frictionAngle), r.circle))

@@ -1,0 +1,37 @@
+"""slope.fos() (issue 37): one call on the settled scene, a conclusive answer with its defaults, the other
+estimates beside it and the design value for the kind of slope (fos_cases.py).
+
+* plane: Hoek & Bray's plane failure built by the joint-set cutter: strength reduction, the design value
+  for jointed rock, within 1 % of the closed form 1.4818 (measured 1.479, 0.6 s), no warning.
+* voronoi: a c-phi slope (c 20 kPa, phi 20 deg) cut into Voronoi blocks: a continuum; rigid blocks give
+  strength reduction 4.94 against Bishop's 1.37, and the design value is Bishop's (measured 1.7 s).
+"""
+import json
+import os
+
+import pytest
+
+from conftest import HERE, run_yade
+
+
+def _run(case):
+    p = run_yade(os.path.join(HERE, "fos_cases.py"), case, cwd=HERE, timeout=240)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    return json.loads([l for l in p.stdout.splitlines() if l.startswith("RESULT ")][0][7:]), p.stdout
+
+
+def test_fos_of_a_plane_failure_is_the_closed_form():
+    r, out = _run("plane")
+    assert r["warnings"] == [] and r["kind"] == "jointed rock" and r["method"] == "strength reduction", r
+    assert r["fs"] == pytest.approx(r["closed"], rel=0.01), r
+    assert set(r["estimates"]) == {"strength reduction", "contact forces, surface of slipping joints"}, r
+    assert r["repr"].startswith("FosResult(fs=1.4") and "conclusive" in r["repr"], r
+    assert "| strength reduction | 1.4" in out and "Warnings: none (conclusive)" in out  # to_markdown()
+
+
+def test_fos_of_a_continuum_cut_into_blocks_is_limit_equilibrium():
+    r, out = _run("voronoi")
+    bishop = r["estimates"]["Bishop, critical circle (blocks' material)"]["fs"]
+    assert r["kind"] == "continuum cut into blocks" and r["method"].startswith("Bishop") and r["fs"] == bishop, r
+    assert 1.0 < bishop < 2.0 and r["estimates"]["strength reduction"]["fs"] > 1.5 * bishop, r
+    assert r["warnings"] == [], r
