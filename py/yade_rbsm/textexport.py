@@ -6,7 +6,9 @@ One line per Polygon2D body, after a ``#format`` line::
     id  x  y  angle  thickness  n  x1 y1 ... xn yn
 
 (centroid [m], rotation about z [rad], thickness [m], then the n world vertices, counter-clockwise).
-:func:`read` returns what :func:`yade_rbsm.polygon2d` needs to make the blocks again.
+:func:`read` returns what :func:`yade_rbsm.polygon2d` needs to make the blocks again. Like YADE's
+text format it carries no material and no velocity: ``yade_rbsm.io.export_blocks`` writes a file that
+carries every RbsmMat attribute, the fixed flags and the velocities.
 """
 FORMAT = "id_x_y_angle_thickness_n_vertices"
 

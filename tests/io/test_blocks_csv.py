@@ -169,3 +169,26 @@ report(text=open("blocks.csv").read(), mats=[(x.material.label, x.material.densi
     assert r["text"].count("# material ") == 2, r["text"]
     assert r["mats"] == [["unlisted0", 2000, 0], ["unlisted0", 2000, 0], ["unlisted1", 2100, 5.0], ["unlisted0", 2000, 0]]
     assert r["n"] == 2 and r["vel"] == [0.25, 0, 0] and r["fixed"] == "xyzXYZ"
+
+
+def test_every_material_attribute_survives_the_round_trip(tmp_path):
+    """Issue 36: export_blocks wrote young ... tensileStrength only, so a material's jointKn, jointKs and
+    ductile came back as the defaults (a joint set's stiffness lost without a word). Every attribute RbsmMat
+    has is written now; the test compares them all, whatever RbsmMat gains later."""
+    script = r"""
+import math
+import yade_rbsm.io as io
+from yade_rbsm import polygon2d
+m = RbsmMat(label="rock", young=3e8, poisson=0.27, planeStrain=False, density=2550, frictionAngle=0.61, cohesion=2e4,
+            tensileStrength=1e4, ductile=True, jointKn=4e9, jointKs=1.5e9)
+O.materials.append(m)
+O.bodies.append(polygon2d([(0, 0), (1, 0), (1, 1), (0, 1)], m))
+io.export_blocks("b.csv")
+before = {k: v for k, v in m.dict().items() if k != "id"}
+O.reset()  # a fresh scene: the material comes from the file's definition
+O.bodies.append(io.import_blocks("b.csv"))
+after = {k: v for k, v in O.bodies[0].material.dict().items() if k != "id"}
+report(before=before, after=after)
+"""
+    (r,) = run_ok(script, workdir=str(tmp_path))
+    assert r["after"] == r["before"], r

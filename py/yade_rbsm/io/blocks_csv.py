@@ -3,7 +3,7 @@
 The format (comma-separated, one block per row, ``#`` lines are comments)::
 
     # yade-rbsm blocks 1
-    # material label=rock young=200000000 poisson=0.2 planeStrain=1 density=2403 frictionAngle=0.5236 cohesion=0 tensileStrength=0
+    # material label=rock young=200000000 poisson=0.2 planeStrain=1 density=2403 frictionAngle=0.5236 cohesion=0 tensileStrength=0 ductile=0 jointKn=0 jointKs=0
     id,material,fixed,thickness,vx,vy,angVel,x1,y1,x2,y2,x3,y3,x4,y4
     0,rock,1,1,0,0,0,-100,-1,100,-1,100,0,-100,0
     1,rock,0,1,0.5,0,0,0,0,4,0,4,1,0,1
@@ -30,7 +30,13 @@ from ..omega import is_fixed
 __all__ = ["export_blocks", "import_blocks", "MATERIAL_KEYS"]
 
 SIGNATURE = "# yade-rbsm blocks 1"
-MATERIAL_KEYS = ("young", "poisson", "planeStrain", "density", "frictionAngle", "cohesion", "tensileStrength")
+# every attribute of RbsmMat but its id and label, in this order (those it gains later come after them):
+# a material's joint stiffness or ductility must not come back as the default
+_FIRST_KEYS = ("young", "poisson", "planeStrain", "density", "frictionAngle", "cohesion", "tensileStrength", "ductile",
+               "jointKn", "jointKs")
+_BOOL_KEYS = {k for k, v in wrapper.RbsmMat().dict().items() if isinstance(v, bool)}
+MATERIAL_KEYS = tuple(k for k in _FIRST_KEYS if k in wrapper.RbsmMat().dict()) + tuple(sorted(
+    k for k in wrapper.RbsmMat().dict() if k not in _FIRST_KEYS + ("id", "label")))
 OPTIONAL = {"id": None, "fixed": 0, "thickness": 1.0, "vx": 0.0, "vy": 0.0, "angVel": 0.0}
 
 
@@ -39,7 +45,7 @@ def _num(x):
 
 
 def _material_line(label, m):
-    vals = " ".join("%s=%s" % (k, int(m.planeStrain) if k == "planeStrain" else _num(getattr(m, k))) for k in MATERIAL_KEYS)
+    vals = " ".join("%s=%s" % (k, int(getattr(m, k)) if k in _BOOL_KEYS else _num(getattr(m, k))) for k in MATERIAL_KEYS)
     return "# material label=%s %s" % (label, vals)
 
 
@@ -122,7 +128,7 @@ def _parse_material(text, where):
     kw = {}
     for k, v in fields.items():
         try:
-            kw[k] = bool(int(v)) if k == "planeStrain" else float(v)
+            kw[k] = bool(int(v)) if k in _BOOL_KEYS else float(v)
         except ValueError:
             raise ValueError("%s: material %r: %s=%r is not a number" % (where, label, k, v)) from None
     return label, kw

@@ -27,7 +27,7 @@ t_, n_ = (-cos(psi), sin(psi)), (sin(psi), cos(psi))  # up the slope, out of it
 front = (t_[0] * slide - n_[0] * d, t_[1] * slide - n_[1] * d)
 corners = [(0, H), (L, H), (L, 0), (0, 0)]  # (up the slope, out of it): a left-handed frame, so clockwise here
 b = O.bodies[O.bodies.append(polygon2d([(front[0] + t_[0] * u + n_[0] * v, front[1] + t_[1] * u + n_[1] * v) for u, v in corners], mat))]
-O.engines = engines(gravity=(0, -g, 0), contact_damping=xi)
+O.engines = engines(gravity=(0, -g, 0), contact_damping=xi, update_tolerance=p.get("ut", 0.0))
 O.trackEnergy = True
 O.step()
 E0 = O.energy.total()  # the energy balance: O.energy.total() - E0, against the work of gravity
