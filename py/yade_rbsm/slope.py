@@ -60,7 +60,7 @@ _geometry = _sibling("geometry")
     _geometry.monotone, _geometry.interp_y, _geometry.point_segment_distance)
 _interp_y = interp_y  # the name safety.py and tests used
 
-__all__ = ["Block", "SlopeBlocks", "JointSet", "Trace", "jointset_blocks", "jointset_blocks_dxf", "fos", "FosResult", "brick_blocks", "column_blocks", "voronoi_slope_blocks", "slope_polygon",
+__all__ = ["Block", "SlopeBlocks", "JointSet", "Trace", "jointset_blocks", "jointset_blocks_dxf", "fos", "FosResult", "SlopeModel", "brick_blocks", "column_blocks", "voronoi_slope_blocks", "slope_polygon",
            "cut_polygons", "polygon_area", "region_area", "check_polygon", "build_scene", "bond_and_break",
            "break_crack", "joints_on", "break_joints", "set_joint_strength", "give_joint_sets", "joint_sets", "apply_joint_sets",
            "unbalanced_ratio", "settle"]
@@ -458,4 +458,7 @@ def __getattr__(name):
     if name in ("fos", "FosResult"):
         from . import fos
         return getattr(fos, name)
+    if name in ("SlopeModel", "Stage"):
+        from . import model
+        return getattr(model, name)
     raise AttributeError("module %r has no attribute %r" % (__name__, name))
