@@ -32,11 +32,48 @@ from typing import List, Optional, Sequence, Tuple
 
 from .checks import count, number
 
-__all__ = ["JointSet", "Trace", "SetCut", "jointset_blocks", "jointset_blocks_dxf", "set_traces", "report"]
+__all__ = ["JointStrength", "JointSet", "Trace", "SetCut", "jointset_blocks", "jointset_blocks_dxf", "set_traces", "report"]
 
 
-@dataclass
-class JointSet:
+@dataclass(kw_only=True)
+class JointStrength:
+    """The strength and stiffness a joint set or a trace gives its joints (keywords only): *cohesion* [Pa],
+    *friction_angle* [deg] (None: the rock's, ``RbsmMat.frictionAngle``), *tensile_strength* [Pa], *kn*,
+    *ks* [Pa/m] (None: the blocks' Kawai springs), *ductile* (None: the blocks'), and *name* for the
+    reports. A joint is a discontinuity: by default no cohesion and no tensile strength."""
+    cohesion: float = 0.0
+    friction_angle: Optional[float] = None
+    tensile_strength: float = 0.0
+    kn: Optional[float] = None
+    ks: Optional[float] = None
+    ductile: Optional[bool] = None
+    name: Optional[str] = None
+
+    def __repr__(self):
+        # its own fields first (geometry), then the strength; defaults left out
+        from dataclasses import MISSING, fields
+        own = [f for f in fields(self) if f.name not in _STRENGTH_FIELDS] + [f for f in fields(self) if f.name in _STRENGTH_FIELDS]
+        shown = [(f.name, getattr(self, f.name)) for f in own
+                 if f.default is MISSING or getattr(self, f.name) != f.default]
+        return "%s(%s)" % (type(self).__name__, ", ".join("%s=%r" % kv for kv in shown))
+
+    def _check_strength(self, who):
+        self.cohesion = number(who, "cohesion", self.cohesion, 0)
+        if self.friction_angle is not None:
+            self.friction_angle = number(who, "friction_angle (degrees)", self.friction_angle, 0, 90, high_open=True)
+        self.tensile_strength = number(who, "tensile_strength", self.tensile_strength, 0)
+        for key in ("kn", "ks"):
+            if getattr(self, key) is not None:
+                setattr(self, key, number(who, key, getattr(self, key), 0, low_open=True))
+        if self.ductile is not None and not isinstance(self.ductile, bool):
+            raise ValueError("%s: ductile must be True, False or None (the blocks'), got %r" % (who, self.ductile))
+
+
+_STRENGTH_FIELDS = ("cohesion", "friction_angle", "tensile_strength", "kn", "ks", "ductile", "name")
+
+
+@dataclass(repr=False)
+class JointSet(JointStrength):
     """A set of parallel joints, as UDEC's ``jset``.
 
     Geometry: *dip* [deg] counter-clockwise from +x (a set dipping 20 deg towards +x, out of a face
@@ -46,10 +83,8 @@ class JointSet:
     *dip_spread* [deg] and *spacing_spread* (a fraction of the spacing) the standard deviations of a
     random spread drawn from *seed* (normal, the spacing kept above a tenth of its mean).
 
-    Strength and stiffness of the joints: *cohesion* [Pa], *friction_angle* [deg] (None: the rock's,
-    ``RbsmMat.frictionAngle``), *tensile_strength* [Pa], *kn*, *ks* [Pa/m] (None: the blocks' Kawai
-    springs), *ductile* (None: the blocks'). A set is a discontinuity: by default it has no cohesion
-    and no tensile strength. *name* addresses the set in reports (default ``set A``, ``set B``, ...)."""
+    Strength and stiffness of the joints: the keywords of :class:`JointStrength`; *name* addresses the
+    set in reports (default ``set A``, ``set B``, ...)."""
     dip: float
     spacing: float
     origin: Tuple[float, float] = (0.0, 0.0)
@@ -58,13 +93,6 @@ class JointSet:
     dip_spread: float = 0.0
     spacing_spread: float = 0.0
     seed: int = 0
-    cohesion: float = 0.0
-    friction_angle: Optional[float] = None
-    tensile_strength: float = 0.0
-    kn: Optional[float] = None
-    ks: Optional[float] = None
-    ductile: Optional[bool] = None
-    name: Optional[str] = None
 
     def __post_init__(self):
         who = "JointSet"
@@ -83,39 +111,20 @@ class JointSet:
         self.dip_spread = number(who, "dip_spread", self.dip_spread, 0, 45)
         self.spacing_spread = number(who, "spacing_spread", self.spacing_spread, 0, 1)
         self.seed = count(who, "seed", self.seed, 0)
-        _check_strength(self, who)
+        self._check_strength(who)
 
 
-@dataclass
-class Trace:
+@dataclass(repr=False)
+class Trace(JointStrength):
     """One given joint trace (a fault, a mapped joint): a polyline *points* with the strength fields
     of :class:`JointSet` (a trace given as a bare polyline takes the defaults: no cohesion, no
     tensile strength, the rock's friction)."""
     points: Sequence[Tuple[float, float]]
-    cohesion: float = 0.0
-    friction_angle: Optional[float] = None
-    tensile_strength: float = 0.0
-    kn: Optional[float] = None
-    ks: Optional[float] = None
-    ductile: Optional[bool] = None
-    name: Optional[str] = None
 
     def __post_init__(self):
         from .geometry import points
         self.points = points("Trace: points", self.points, 2)
-        _check_strength(self, "Trace")
-
-
-def _check_strength(s, who):
-    s.cohesion = number(who, "cohesion", s.cohesion, 0)
-    if s.friction_angle is not None:
-        s.friction_angle = number(who, "friction_angle (degrees)", s.friction_angle, 0, 90, high_open=True)
-    s.tensile_strength = number(who, "tensile_strength", s.tensile_strength, 0)
-    for name in ("kn", "ks"):
-        if getattr(s, name) is not None:
-            setattr(s, name, number(who, name, getattr(s, name), 0, low_open=True))
-    if s.ductile is not None and not isinstance(s.ductile, bool):
-        raise ValueError("%s: ductile must be True, False or None (the blocks'), got %r" % (who, s.ductile))
+        self._check_strength("Trace")
 
 
 @dataclass

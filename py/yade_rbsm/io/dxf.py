@@ -20,7 +20,7 @@ from yade import wrapper
 
 from ..blocks import polygon2d
 from ..omega import is_fixed
-from .dxf_units import _ezdxf, drawing_scale
+from .dxf_units import _ezdxf, drawing_scale, read_drawing  # noqa: F401 (drawing_scale: part of this module's API)
 from .polylines import block_outline
 
 __all__ = ["import_dxf", "export_dxf", "drawing_scale"]
@@ -75,14 +75,7 @@ def import_dxf(filename, materials, fixed_layers=(), thickness=None, O=None, uni
     in the module docstring raise ValueError naming file, entity handle and layer."""
     if O is None:
         from yade import O
-    ezdxf = _ezdxf()
-    try:
-        doc = ezdxf.readfile(filename)
-    except IOError as e:
-        raise ValueError("%s: cannot read the file (%s)" % (filename, e)) from None
-    except ezdxf.DXFStructureError as e:
-        raise ValueError("%s: not a valid DXF file (%s)" % (filename, e)) from None
-    scale = drawing_scale(doc, units, filename)
+    doc, scale = read_drawing(filename, units)
     fixed = {l.lower() for l in fixed_layers}
     bodies = []
     for where, layer, pts, closed, drawn_thickness in _rings(doc.modelspace(), filename):

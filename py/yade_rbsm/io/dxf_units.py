@@ -1,7 +1,7 @@
 """The length unit of a DXF drawing, and ezdxf itself (pure Python, no YADE): shared by the block
 importer (:mod:`.dxf`) and the slope-drawing reader (:mod:`.slope_dxf`)."""
 
-__all__ = ["drawing_scale"]
+__all__ = ["drawing_scale", "read_drawing"]
 
 # $INSUNITS codes of lengths a slope is drawn in -> metres, and the names units= takes
 _INSUNITS = {0: ("unitless, taken as metres", 1.0), 1: ("in", 0.0254), 2: ("ft", 0.3048), 4: ("mm", 1e-3),
@@ -22,6 +22,19 @@ def drawing_scale(doc, units, filename):
                              filename, code, ", ".join("%d %s" % (k, v[0]) for k, v in sorted(_INSUNITS.items())),
                              ", ".join(sorted(_UNITS))))
     return _INSUNITS[code][1]
+
+
+def read_drawing(filename, units=None):
+    """(ezdxf document, metres per drawing unit) of the DXF *filename*; ValueError naming the file when it
+    cannot be read or is no DXF, or its units are no length (:func:`drawing_scale`)."""
+    ezdxf = _ezdxf()
+    try:
+        doc = ezdxf.readfile(filename)
+    except IOError as e:
+        raise ValueError("%s: cannot read the file (%s)" % (filename, e)) from None
+    except ezdxf.DXFStructureError as e:
+        raise ValueError("%s: not a valid DXF file (%s)" % (filename, e)) from None
+    return doc, drawing_scale(doc, units, filename)
 
 
 def _ezdxf():

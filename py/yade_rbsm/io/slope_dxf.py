@@ -12,7 +12,7 @@ import warnings
 from dataclasses import dataclass, field
 from typing import Dict, List, Tuple
 
-from .dxf_units import _ezdxf, drawing_scale
+from .dxf_units import read_drawing
 from .polylines import block_outline
 
 __all__ = ["SlopeDrawing", "read_slope_dxf"]
@@ -53,14 +53,7 @@ def read_slope_dxf(filename, outline_layer="OUTLINE", trace_layers=None, units=N
     """The outline and the traces of the DXF *filename* (module docstring): a :class:`SlopeDrawing`.
     *trace_layers*: the layers to read traces from (default: every layer but the outline's that has
     lines); layer names match case-insensitively."""
-    ezdxf = _ezdxf()
-    try:
-        doc = ezdxf.readfile(filename)
-    except IOError as e:
-        raise ValueError("%s: cannot read the file (%s)" % (filename, e)) from None
-    except ezdxf.DXFStructureError as e:
-        raise ValueError("%s: not a valid DXF file (%s)" % (filename, e)) from None
-    scale = drawing_scale(doc, units, filename)
+    doc, scale = read_drawing(filename, units)
     wanted = None if trace_layers is None else {l.lower(): l for l in trace_layers}
     outlines, traces, skipped, other_layers = [], {}, {}, set()
     for e in doc.modelspace():
