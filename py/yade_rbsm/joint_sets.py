@@ -137,6 +137,7 @@ class SetCut:
     segments: List[Tuple[Tuple[float, float], Tuple[float, float]]] = field(default_factory=list)
     length: float = 0.0
     given: float = 0.0
+    traces: List[Tuple[Tuple[float, float], Tuple[float, float]]] = field(default_factory=list)  # those that kept a joint
 
     def __repr__(self):
         return "SetCut(%r: %.4g m of joint, %.4g m of trace given inside the outline)" % (self.name, self.length, self.given)
@@ -284,24 +285,30 @@ def jointset_blocks(surface=None, base=None, sets=(), traces=(), min_area=None, 
     tol = 1e-9 * scale
     cuts = [SetCut(src, nm) for src, nm in zip(sets + traces, names)]
     faces = [[] for _ in cuts]  # every block edge on the set, from both sides of each joint
+    kept = [set() for _ in cuts]  # indices of the set's traces that carry an edge
     for b in blocks:
         v = b.vertices
         for i in range(len(v)):
             e = (v[i], v[(i + 1) % len(v)])
             for k, segs in enumerate(source_segs):
-                if any(_on(e, s, tol) for s in segs):
+                hit = next((j for j, s in enumerate(segs) if _on(e, s, tol)), None)
+                if hit is not None:
                     faces[k].append(e)
+                    if not _on_outline(e, region, tol):
+                        kept[k].add(hit)
                     break
-    for sc, segs, f in zip(cuts, source_segs, faces):
+    for k, (sc, segs, f) in enumerate(zip(cuts, source_segs, faces)):
         # an edge on the outline is no joint (a set's line along the outline): blocks on both sides only
         f = [e for e in f if not _on_outline(e, region, tol)]
         sc.segments = list({tuple(sorted(e)): e for e in f}.values())
         sc.length = 0.5 * sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in f)  # each joint seen from both sides
         sc.given = sum(_inside_length(s, region) for s in segs)
+        sc.traces = [segs[j] for j in sorted(kept[k])]
     merged = {}
     for sc in cuts:  # the traces of one name (a drawing's layer) are one family
         m = merged.setdefault(sc.name, SetCut(sc.source, sc.name))
         m.segments += sc.segments
+        m.traces += sc.traces
         m.length += sc.length
         m.given += sc.given
     cuts = list(merged.values())

@@ -6,7 +6,7 @@ import json
 import math
 import numbers
 
-__all__ = ["build_scene", "break_crack", "joints_on", "break_joints", "set_joint_strength", "give_joint_sets", "joint_sets",
+__all__ = ["build_scene", "break_crack", "joints_on", "joints_of", "break_joints", "set_joint_strength", "give_joint_sets", "joint_sets",
            "apply_joint_sets", "bond_and_break", "unbalanced_ratio", "settle"]
 
 
@@ -209,7 +209,7 @@ def break_joints(polylines, tol=None, counted=None):
 
 
 def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=None, ductile=None, tol=None,
-                       normal_stiffness=None, shear_stiffness=None):
+                       normal_stiffness=None, shear_stiffness=None, name=None):
     """A joint set with its own strength: every joint on the *polylines* (:func:`joints_on`; e.g. a
     bedding plane given to a builder's ``joints=``) gets *cohesion* [Pa], tan(*friction_angle* [rad])
     and *tensile_strength* [Pa] (default: the Mohr-Coulomb apex cohesion / tan(friction_angle); a
@@ -227,6 +227,7 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
     kept with the scene (:func:`joint_sets`, in O.tags) and :func:`apply_joint_sets` gives them the
     set's strength; strength_reduction does so between the chunks of its trials (without it a wedge
     on a 30 deg set in 40 deg rock, tan 30 / tan 25 = 1.238, stopped at 1.269).
+    *name*: the set's name, kept with it (:func:`joints_of` finds its joints by it for the rest of the run).
     *friction_angle* in radians: degrees (> pi/2) are refused. Returns the number of joints set (over
     all ranks under yade.mpy, where every rank calls it);
     ValueError if a polyline carries no joint (it misses the blocks' cuts) or a value is out of range."""
@@ -266,7 +267,7 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
             raise ValueError("%s: no joint lies on polylines[%d] %s (give the polyline the blocks were cut along, "
                              "after build_scene and bond_and_break; the joints are looked for where build_scene put "
                              "the blocks, kept in O.tags, or for other bodies State.refPos and refOri: were these reset since?)" % (who, k, polylines[k]))
-    joint_set = dict(polylines=[[list(p) for p in l] for l in polylines], tol=tol, cohesion=cohesion,
+    joint_set = dict(name=name, polylines=[[list(p) for p in l] for l in polylines], tol=tol, cohesion=cohesion,
                      tan_phi=math.tan(friction_angle), tensile_strength=tensile_strength, ductile=ductile,
                      kn=stiffness[0], ks=stiffness[1])
     if stiffness[0] is not None:
@@ -294,9 +295,24 @@ _SETS_TAG = "yade_rbsm.joint_sets"
 
 def joint_sets():
     """The joint sets set_joint_strength gave the current scene (kept in O.tags, so saved with it):
-    [{polylines, tol, cohesion, tan_phi, tensile_strength, ductile, kn, ks}], in the order they were given
-    (kn, ks None: the blocks' springs)."""
+    [{name, polylines, tol, cohesion, tan_phi, tensile_strength, ductile, kn, ks}], in the order they were
+    given (kn, ks None: the blocks' springs; name None if none was given)."""
     return _tagged(_SETS_TAG)
+
+
+def joints_of(name):
+    """The real joints now on the joint set or trace called *name* (its name in jointset_blocks, or
+    set_joint_strength's *name*), contacts made since it was given included: a list of interactions.
+    ValueError naming the sets the scene has, for a name it has not."""
+    sets = [js for js in joint_sets() if js.get("name") == name]
+    if not sets:
+        raise ValueError("joints_of: no joint set called %r (the scene's: %s)" % (
+            name, ", ".join(repr(js.get("name")) for js in joint_sets()) or "none"))
+    found = {}
+    for js in sets:
+        for I in joints_on(js["polylines"], js["tol"]):
+            found[(I.id1, I.id2)] = I
+    return list(found.values())
 
 
 def _give(js, joints, F=1.0, reduce_tensile=False):
@@ -382,7 +398,8 @@ def give_joint_sets(sb):
         src = sc.source
         if not sc.segments:
             continue
-        polylines = [list(e) for e in sc.segments]
+        # the set's traces that kept a joint (its joints' edges for an older SetCut): a few long polylines
+        polylines = [list(t) for t in getattr(sc, "traces", [])] or [list(e) for e in sc.segments]
         if src.friction_angle is not None:
             phi = math.radians(src.friction_angle)
         else:
@@ -392,7 +409,7 @@ def give_joint_sets(sb):
                 t = min(mpi.distributed().comm.allgather(t))
             phi = math.atan(t)
         n += set_joint_strength(polylines, src.cohesion, phi, tensile_strength=src.tensile_strength, ductile=src.ductile,
-                                normal_stiffness=src.kn, shear_stiffness=src.ks)
+                                normal_stiffness=src.kn, shear_stiffness=src.ks, name=sc.name)
     return n
 
 

@@ -36,7 +36,12 @@ sl.bond_and_break(sb, give_sets=False)  # an elastic equilibrium first, then the
 sl.settle(tol=1e-4, max_steps=60000, check=200, density_scaling=True)
 given = sl.give_joint_sets(sb)
 on = {n: [(I.phys.cohesion, I.phys.tanPhi) for I in sl.joints_on([t.points])] for n, t in (("bedding", bedding), ("crack", crack))}
+by_name = {n: [(I.phys.cohesion, I.phys.tanPhi) for I in sl.joints_of(n)] for n in ("bedding", "tension crack")}
+try:
+    sl.joints_of("fault")
+except ValueError as e:
+    unknown = str(e)
 r = strength_reduction(start=1.0, grow=1.2, rtol=0.005, density_scaling=True, max_steps=8000, check=200, d_fail=0.1,
                        verbose=False)
-print("RESULT " + json.dumps(dict(fs=r.fs, lo=r.lo, hi=r.hi, closed=closed, blocks=len(sb.free), welds=len(sb.welds), given=given,
+print("RESULT " + json.dumps(dict(fs=r.fs, lo=r.lo, hi=r.hi, closed=closed, blocks=len(sb.free), welds=len(sb.welds), given=given, by_name=by_name, unknown=unknown,
                                   on=on, tan_rock=math.tan(rock.frictionAngle))))

@@ -180,6 +180,9 @@ def test_joint_set_cutter_gives_hoek_and_bray_plane_failure():
     assert r["given"] == 2 and r["blocks"] == 4 and r["welds"] == 2, r
     assert r["on"]["bedding"] == [[20e3, pytest.approx(math.tan(math.radians(30)))]], r
     assert r["on"]["crack"] == [[0.0, pytest.approx(math.tan(math.radians(20)))]], r
+    # the sets are addressed by name for the rest of the run (slope.joints_of)
+    assert r["by_name"] == {"bedding": r["on"]["bedding"], "tension crack": r["on"]["crack"]}, r
+    assert "no joint set called 'fault'" in r["unknown"] and "'bedding'" in r["unknown"], r
     assert r["fs"] == pytest.approx(r["closed"], rel=0.01), r
 
 

@@ -2,7 +2,7 @@
 stages, fos(), a dynamic run, a report in fewer than 30 lines) runs and says what it should: a conclusive
 factor of safety by strength reduction, the stages with their figures, a Markdown report, a saved scene
 whose stages SlopeModel.resume() finds after O.load in another process and continues (measured: FS 1.168,
-0.60 m in 1 s at the joints' strength / 1.3, 33 s wall)."""
+0.60 m in 1 s at the joints' strength / 1.3, 11 s wall)."""
 import os
 import re
 import subprocess
