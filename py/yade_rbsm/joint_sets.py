@@ -32,7 +32,8 @@ from typing import List, Optional, Sequence, Tuple
 
 from .checks import count, number
 
-__all__ = ["JointStrength", "JointSet", "Trace", "SetCut", "jointset_blocks", "jointset_blocks_dxf", "set_traces", "report"]
+__all__ = ["JointStrength", "JointSet", "Trace", "SetCut", "jointset_blocks", "jointset_blocks_dxf", "cut_by_joint_sets",
+           "set_traces", "report"]
 
 
 @dataclass(kw_only=True)
@@ -238,16 +239,11 @@ def jointset_blocks(surface=None, base=None, sets=(), traces=(), min_area=None, 
     and trace, in the order given), ``welds`` (the outline decomposition's cuts) and ``slivers``
     (dict: merged places and area, kept places and area)."""
     from . import slope as S
-    from .voronoi import _tess
-    from .geometry import polygon_area, points
+    from .geometry import polygon_area
     who = "jointset_blocks"
     if (surface is None) == (outline is None):
         raise ValueError("%s: give the ground polyline surface (with base) or the polygon outline, not both" % who)
-    sets = list(sets)
-    for k, js in enumerate(sets):
-        if not isinstance(js, JointSet):
-            raise ValueError("%s: sets[%d] is not a JointSet (got %r)" % (who, k, js))
-    traces = [t if isinstance(t, Trace) else Trace(points("%s: traces[%d]" % (who, k), t, 2)) for k, t in enumerate(traces)]
+    sets, traces = _checked(sets, traces, who)
     if outline is not None:
         if base is not None:
             raise ValueError("%s: base goes with surface; an outline is the whole region" % who)
@@ -263,55 +259,13 @@ def jointset_blocks(surface=None, base=None, sets=(), traces=(), min_area=None, 
         surf, base_y, _, _, layers, foundation, wall = S._common_args(surface, base, (), (), layers, foundation, wall, who)
         region = S.slope_polygon(surf, base_y)
     xs, ys = [p[0] for p in region], [p[1] for p in region]
-    bbox = (min(xs), min(ys), max(xs), max(ys))
     area = polygon_area(region)
     if min_area is None:
         min_area = 0.01 * min(js.spacing for js in sets) ** 2 if sets else 1e-4 * area
     min_area = number(who, "min_area", min_area, 0)
-    names = [js.name or "set %s" % chr(ord("A") + k) for k, js in enumerate(sets)]
-    names += [t.name or "traces[%d]" % k for k, t in enumerate(traces)]
-    source_segs = [set_traces(js, bbox) for js in sets]
-    source_segs += [list(zip(t.points[:-1], t.points[1:])) for t in traces]
-    # a trace end meant to lie on the outline or on another trace (a bedding that daylights on the face)
-    # is off it by round-off, and the exact cutter would take it for an end inside rock: every trace
-    # reaches 1e-9 x the model's size past its ends (the overshoot dangles, and goes)
-    reach = 1e-9 * max(bbox[2] - bbox[0], bbox[3] - bbox[1])
-    cut_segs = [_extended(s, reach) for segs in source_segs for s in segs]
-    cut_segs += [s for t, _ in layers if t is not None for s in zip(t[:-1], t[1:])]  # layer tops: bonded rock
-    r = _tess.cut_by_traces(region, cut_segs, min_area)
-    blocks = [S.Block(list(v), polygon_area(v), False, "slope") for v in r["blocks"]]
-    # tag each block edge shared by two blocks by the set or trace it lies on (the first that has it)
-    scale = max(1.0, max(abs(c) for p in region for c in p))
-    tol = 1e-9 * scale
-    cuts = [SetCut(src, nm) for src, nm in zip(sets + traces, names)]
-    faces = [[] for _ in cuts]  # every block edge on the set, from both sides of each joint
-    kept = [set() for _ in cuts]  # indices of the set's traces that carry an edge
-    for b in blocks:
-        v = b.vertices
-        for i in range(len(v)):
-            e = (v[i], v[(i + 1) % len(v)])
-            for k, segs in enumerate(source_segs):
-                hit = next((j for j, s in enumerate(segs) if _on(e, s, tol)), None)
-                if hit is not None:
-                    faces[k].append(e)
-                    if not _on_outline(e, region, tol):
-                        kept[k].add(hit)
-                    break
-    for k, (sc, segs, f) in enumerate(zip(cuts, source_segs, faces)):
-        # an edge on the outline is no joint (a set's line along the outline): blocks on both sides only
-        f = [e for e in f if not _on_outline(e, region, tol)]
-        sc.segments = list({tuple(sorted(e)): e for e in f}.values())
-        sc.length = 0.5 * sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in f)  # each joint seen from both sides
-        sc.given = sum(_inside_length(s, region) for s in segs)
-        sc.traces = [segs[j] for j in sorted(kept[k])]
-    merged = {}
-    for sc in cuts:  # the traces of one name (a drawing's layer) are one family
-        m = merged.setdefault(sc.name, SetCut(sc.source, sc.name))
-        m.segments += sc.segments
-        m.traces += sc.traces
-        m.length += sc.length
-        m.given += sc.given
-    cuts = list(merged.values())
+    tops = [s for t, _ in layers if t is not None for s in zip(t[:-1], t[1:])]  # layer tops: bonded rock
+    vertex_lists, cuts, welds, slivers = _cut([region], region, sets, traces, tops, min_area)
+    blocks = [S.Block(list(v), polygon_area(v), False, "slope") for v in vertex_lists]
     if layers:
         S._assign_layers(blocks, layers)
     if outline is not None:
@@ -325,10 +279,114 @@ def jointset_blocks(surface=None, base=None, sets=(), traces=(), min_area=None, 
     sb = S.SlopeBlocks(blocks + fixed, surf, base_y, area, 0.0, None,
                        [[a, b] for sc in cuts for a, b in sc.segments], layers=layers, polygon=region,
                        pattern="joint sets")
-    sb.joint_sets = cuts
-    sb.welds = [tuple(map(tuple, w)) for w in r["welds"]]
-    sb.slivers = dict(min_area=min_area, merged=[tuple(p) for p in r["merged"]], merged_area=r["merged_area"],
-                      kept=[tuple(p) for p in r["kept_slivers"]], kept_area=r["kept_area"])
+    sb.joint_sets, sb.welds, sb.slivers = cuts, welds, slivers
+    return sb
+
+
+def _bbox_of(pts):
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def _cut(pieces, region, sets, traces, extra, min_area):
+    """The convex blocks of *pieces* (simple polygons inside *region*) cut by the JointSets *sets*, the
+    Traces *traces* and the segments *extra* (untagged cuts: layer tops), each piece with the CGAL cutter;
+    returns (vertex lists, SetCuts merged by name, welds, slivers dict)."""
+    from .voronoi import _tess
+    bbox = _bbox_of(region)
+    names = [js.name or "set %s" % chr(ord("A") + k) for k, js in enumerate(sets)]
+    names += [t.name or "traces[%d]" % k for k, t in enumerate(traces)]
+    source_segs = [set_traces(js, bbox) for js in sets]
+    source_segs += [list(zip(t.points[:-1], t.points[1:])) for t in traces]
+    # a trace end meant to lie on the outline or on another trace (a bedding that daylights on the face)
+    # is off it by round-off, and the exact cutter would take it for an end inside rock: every trace
+    # reaches 1e-9 x the model's size past its ends (the overshoot dangles, and goes)
+    reach = 1e-9 * max(bbox[2] - bbox[0], bbox[3] - bbox[1])
+    cut_segs = [_extended(s, reach) for segs in source_segs for s in segs] + [tuple(s) for s in extra]
+    seg_boxes = [_bbox_of(sg) for sg in cut_segs]
+    blocks, welds = [], []
+    slivers = dict(min_area=min_area, merged=[], merged_area=0.0, kept=[], kept_area=0.0)
+    for piece in pieces:
+        x0, y0, x1, y1 = _bbox_of(piece)
+        near = [sg for sg, (a0, b0, a1, b1) in zip(cut_segs, seg_boxes) if a0 <= x1 and a1 >= x0 and b0 <= y1 and b1 >= y0]
+        if not near and len(pieces) > 1:  # (a convex piece no trace reaches: itself)
+            blocks.append([tuple(p) for p in piece])
+            continue
+        r = _tess.cut_by_traces(piece, near, min_area)
+        blocks += [list(v) for v in r["blocks"]]
+        welds += [tuple(map(tuple, w)) for w in r["welds"]]
+        slivers["merged"] += [tuple(p) for p in r["merged"]]
+        slivers["merged_area"] += r["merged_area"]
+        slivers["kept"] += [tuple(p) for p in r["kept_slivers"]]
+        slivers["kept_area"] += r["kept_area"]
+    # tag each block edge shared by two blocks by the set or trace it lies on (the first that has it)
+    scale = max(1.0, max(abs(c) for p in region for c in p))
+    tol = 1e-9 * scale
+    cuts = [SetCut(src, nm) for src, nm in zip(list(sets) + list(traces), names)]
+    faces = [[] for _ in cuts]  # every block edge on the set, from both sides of each joint
+    kept = [set() for _ in cuts]  # indices of the set's traces that carry an edge
+    for v in blocks:
+        for i in range(len(v)):
+            e = (v[i], v[(i + 1) % len(v)])
+            for k, segs in enumerate(source_segs):
+                hit = next((j for j, sg in enumerate(segs) if _on(e, sg, tol)), None)
+                if hit is not None:
+                    faces[k].append(e)
+                    if not _on_outline(e, region, tol):
+                        kept[k].add(hit)
+                    break
+    for k, (sc, segs, f) in enumerate(zip(cuts, source_segs, faces)):
+        # an edge on the outline is no joint (a set's line along the outline): blocks on both sides only
+        f = [e for e in f if not _on_outline(e, region, tol)]
+        sc.segments = list({tuple(sorted(e)): e for e in f}.values())
+        sc.length = 0.5 * sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in f)  # each joint seen from both sides
+        sc.given = sum(_inside_length(sg, region) for sg in segs)
+        sc.traces = [segs[j] for j in sorted(kept[k])]
+    merged = {}
+    for sc in cuts:  # the traces of one name (a drawing's layer) are one family
+        m = merged.setdefault(sc.name, SetCut(sc.source, sc.name))
+        m.segments += sc.segments
+        m.traces += sc.traces
+        m.length += sc.length
+        m.given += sc.given
+    return blocks, list(merged.values()), welds, slivers
+
+
+def _checked(sets, traces, who):
+    sets = list(sets)
+    for k, js in enumerate(sets):
+        if not isinstance(js, JointSet):
+            raise ValueError("%s: sets[%d] is not a JointSet (got %r)" % (who, k, js))
+    from .geometry import points
+    return sets, [t if isinstance(t, Trace) else Trace(points("%s: traces[%d]" % (who, k), t, 2)) for k, t in enumerate(traces)]
+
+
+def cut_by_joint_sets(sb, sets=(), traces=(), min_area=None, who="cut_by_joint_sets"):
+    """The free blocks of the SlopeBlocks *sb* (any builder's: bricks, columns, Voronoi) cut by the
+    JointSets *sets* and the *traces*, which carry their strength as in :func:`jointset_blocks`: the
+    builders' way in for joint sets (their ``sets=`` and ``traces=``). A trace that ends inside a block
+    cuts nothing of it (UDEC's rule); slivers below *min_area* (default: the builder's smallest block
+    x 1e-3, or 1 % of the smallest set spacing squared, the smaller) are merged into the rest of the
+    block they were cut from. Returns *sb* with its free blocks replaced, ``joint_sets``, ``welds`` and
+    ``slivers`` set, and the sets' joints added to ``sb.joints`` (found again after bonding)."""
+    from . import slope as S
+    from .geometry import polygon_area
+    sets, traces = _checked(sets, traces, who)
+    if not sets and not traces:
+        return sb
+    free = [b for b in sb.blocks if not b.fixed]
+    fixed = [b for b in sb.blocks if b.fixed]
+    if min_area is None:
+        cands = [1e-3 * min(b.area for b in free)] + ([0.01 * min(js.spacing for js in sets) ** 2] if sets else [])
+        min_area = min(cands)
+    min_area = number(who, "min_area", min_area, 0)
+    vertex_lists, cuts, welds, slivers = _cut([b.vertices for b in free], sb.polygon, sets, traces, (), min_area)
+    blocks = [S.Block(list(v), polygon_area(v), False, "slope") for v in vertex_lists]
+    if sb.layers:
+        S._assign_layers(blocks, sb.layers)
+    sb.blocks = blocks + fixed
+    sb.joint_sets, sb.welds, sb.slivers = cuts, welds, slivers
+    sb.joints = list(sb.joints) + [[a, b] for sc in cuts for a, b in sc.segments]
     return sb
 
 

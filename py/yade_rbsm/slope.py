@@ -98,7 +98,7 @@ class SlopeBlocks:
 
 
 def brick_blocks(surface, base, brick_w, brick_h, joints=(), crack=None, foundation=1.0, wall=1.0,
-                 min_area=None, stagger=0.5, cracks=(), layers=()):
+                 min_area=None, stagger=0.5, cracks=(), layers=(), sets=(), traces=()):
     """Cut the slope under the ground polyline *surface* (strictly increasing x) and above *base*
     into bricks (see the module docstring). *joints*: polylines along which the blocks are cut too
     (pre-existing joints, e.g. a slip plane; bonded). *cracks*: polylines along which the blocks are
@@ -106,8 +106,10 @@ def brick_blocks(surface, base, brick_w, brick_h, joints=(), crack=None, foundat
     x are cut exactly like *joints*, others, e.g. vertical or folded ones, by :func:`cut_polygons`).
     *crack*: ``(xc, yc)`` vertical crack from the ground down to ``yc``. *layers*: ``[(top polyline,
     material), ...]`` from the bottom up, the last top may be None (the ground): the blocks are cut
-    along the tops and each takes the layer containing its centroid (``Block.layer``). Returns a
-    :class:`SlopeBlocks`; the slope blocks come first, then the foundation and the walls (fixed)."""
+    along the tops and each takes the layer containing its centroid (``Block.layer``). *sets*, *traces*:
+    JointSets and Traces that cut the bricks and carry their strength (joint_sets.cut_by_joint_sets, as
+    every builder takes them). Returns a :class:`SlopeBlocks`; the slope blocks come first, then the
+    foundation and the walls (fixed)."""
     surf, base, joints, cracks, layers, foundation, wall = _common_args(surface, base, joints, cracks, layers,
                                                                       foundation, wall, "brick_blocks")
     brick_w = _number("brick_blocks: brick_w", brick_w)
@@ -172,12 +174,12 @@ def brick_blocks(surface, base, brick_w, brick_h, joints=(), crack=None, foundat
         _assign_layers(blocks, layers)
     slope_area = region_area(surf, base)
     blocks += _fixed_blocks(surf, base, foundation, wall)
-    return SlopeBlocks(blocks, surf, float(base), slope_area, dropped, crack, given_joints, cracks=all_cracks,
-                       layers=layers, polygon=slope_polygon(surf, base), pattern="bricks")
+    return _with_sets(SlopeBlocks(blocks, surf, float(base), slope_area, dropped, crack, given_joints, cracks=all_cracks,
+                                  layers=layers, polygon=slope_polygon(surf, base), pattern="bricks"), sets, traces, "brick_blocks")
 
 
 def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), layers=(), foundation=1.0, wall=1.0,
-                  min_area=None):
+                  min_area=None, sets=(), traces=()):
     """Columns for toppling: the slope under the ground polyline *surface* (strictly increasing x)
     cut by vertical joints every *width* from the left end (and at every kink of the ground and of
     the base) and, if *block_h* is given, by horizontal cross joints at ``min(base) + k·block_h``
@@ -185,7 +187,7 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
     left to the right end of the slope, x non-decreasing (a repeated x is a vertical riser), below
     the ground; each column stands on its own step when the steps are *width* wide. The fixed
     foundation follows the base (one block per base segment, ``foundation`` m below its lowest point)
-    and the walls stand on it at both ends. *joints*, *cracks*, *layers*: as in
+    and the walls stand on it at both ends. *joints*, *cracks*, *layers*, *sets*, *traces*: as in
     :func:`brick_blocks` (cut with :func:`cut_polygons`)."""
     who = "column_blocks"
     surf = monotone("%s: surface" % who, surface)
@@ -258,16 +260,17 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
                   [(xn, basel[-1][1]), (xn + wall, basel[-1][1]), (xn + wall, surf[-1][1]), (xn, surf[-1][1])]):
             if w[2][1] > w[1][1]:  # no wall where the ground lies on the base
                 blocks.append(Block(w, polygon_area(w), True, "wall"))
-    return SlopeBlocks(blocks, surf, ymin, slope_area, dropped, None, joints, cracks=cracks, layers=layers,
-                       polygon=region, pattern="columns")
+    return _with_sets(SlopeBlocks(blocks, surf, ymin, slope_area, dropped, None, joints, cracks=cracks, layers=layers,
+                                  polygon=region, pattern="columns"), sets, traces, "column_blocks")
 
 
 def voronoi_slope_blocks(surface=None, base=0.0, n=None, spacing=None, seed=0, min_distance=0.0, sites=None,
-                         polygon=None, joints=(), cracks=(), layers=(), foundation=1.0, wall=1.0, min_area=None):
+                         polygon=None, joints=(), cracks=(), layers=(), foundation=1.0, wall=1.0, min_area=None,
+                         sets=(), traces=()):
     """Random Voronoi blocks (CGAL, :func:`yade_rbsm.voronoi.voronoi_blocks`) tiling the slope under
     the ground polyline *surface* above *base* (or the simple polygon *polygon*), then cut along
     *joints*, *cracks* and the layer tops with :func:`cut_polygons`; *n* / *spacing* / *sites*,
-    *seed*, *min_distance*: as in voronoi_blocks. *layers*: as in :func:`brick_blocks`. The fixed
+    *seed*, *min_distance*: as in voronoi_blocks. *layers*, *sets*, *traces*: as in :func:`brick_blocks`. The fixed
     foundation and walls as for bricks (with *polygon*: only a foundation under its lowest point,
     spanning its width)."""
     who = "voronoi_slope_blocks"
@@ -304,8 +307,16 @@ def voronoi_slope_blocks(surface=None, base=0.0, n=None, spacing=None, seed=0, m
             blocks.append(Block(f, polygon_area(f), True, "foundation"))
     else:
         blocks += _fixed_blocks(surf, base, foundation, wall)
-    return SlopeBlocks(blocks, surf, base, slope_area, dropped, None, joints, cracks=cracks, layers=layers,
-                       polygon=poly, pattern="voronoi")
+    return _with_sets(SlopeBlocks(blocks, surf, base, slope_area, dropped, None, joints, cracks=cracks, layers=layers,
+                                  polygon=poly, pattern="voronoi"), sets, traces, "voronoi_slope_blocks")
+
+
+def _with_sets(sb, sets, traces, who):
+    """*sb* cut by the JointSets and Traces (joint_sets.cut_by_joint_sets), or as it is without them."""
+    if not sets and not traces:
+        return sb
+    from . import joint_sets
+    return joint_sets.cut_by_joint_sets(sb, sets, traces, who=who)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -452,7 +463,7 @@ _scene = _sibling("slope_scene")
 
 def __getattr__(name):
     """The joint-set builder (joint_sets.py: JointSet, Trace, jointset_blocks), loaded when first used."""
-    if name in ("JointSet", "Trace", "jointset_blocks", "jointset_blocks_dxf"):
+    if name in ("JointSet", "Trace", "jointset_blocks", "jointset_blocks_dxf", "cut_by_joint_sets"):
         from . import joint_sets
         return getattr(joint_sets, name)
     if name in ("fos", "FosResult"):

@@ -195,3 +195,11 @@ def test_joints_are_found_whatever_refpos_becomes(mode):
     r = result_of("refpos_reset.py", mode)
     assert r["sunk"] > 0.01 and r["new"] >= 5, r  # the scene does what it is for
     assert r["found"] == r["now"] and r["missed"] == [], r
+
+
+def test_a_voronoi_slope_takes_a_fault_with_its_strength():
+    """builder_sets.py (issue 36): voronoi_slope_blocks(traces=[fault]); the fault's joints get c 0 and
+    phi 20 deg at bond_and_break and are found by name; the other joints keep the soil's bond."""
+    r = result_of("builder_sets.py")
+    assert len(r["on"]) >= 8 and all(c == 0 and t == pytest.approx(math.tan(math.radians(20))) for c, t in r["on"]), r
+    assert r["others"] > 100 and 2e4 in r["others_c"], r

@@ -261,3 +261,30 @@ def test_bad_slope_drawings_are_refused_by_name(tmp_path, bad, message):
     with pytest.raises(ValueError, match=message) as e:
         slope.jointset_blocks_dxf(str(tmp_path / "bad.dxf"))
     assert "bad.dxf" in str(e.value)
+
+
+@pytest.mark.parametrize("builder", ["bricks", "columns", "voronoi"])
+def test_every_builder_takes_joint_sets_and_traces(builder):
+    """Issue 36: the builders share one way in for joint sets: bricks, columns and Voronoi blocks cut by a
+    persistent set and a fault trace that carry their strength (joint_sets.cut_by_joint_sets): the blocks
+    still tile the slope, convex; the set's and the fault's joints are all there and on their lines."""
+    A = slope.JointSet(dip=-20, spacing=3, friction_angle=30)
+    fault = slope.Trace([(5, -12), (30, 25)], friction_angle=20, name="fault")
+    kw = dict(sets=[A], traces=[fault])
+    sb = {"bricks": lambda: slope.brick_blocks(SURFACE, -10, 4, 2, **kw),
+          "columns": lambda: slope.column_blocks(SURFACE, -10, 3, **kw),
+          "voronoi": lambda: slope.voronoi_slope_blocks(SURFACE, -10, spacing=3, seed=1, **kw)}[builder]()
+    region = slope.slope_polygon(SURFACE, -10)
+    free = [b.vertices for b in sb.free]
+    total = sum(exact_area(v) for v in free) + Fraction(sb.dropped_area)
+    assert abs(float(total - exact_area(region))) <= 1e-9 * float(exact_area(region))
+    assert _tess.union_area(free) == pytest.approx(float(sum(exact_area(v) for v in free)), rel=1e-12)
+    for v in free:
+        assert _tess.polygon_problem(v) == "", v
+    assert [sc.name for sc in sb.joint_sets] == ["set A", "fault"] and sb.pattern == builder
+    lines = {"set A": J.set_traces(A, _bbox(region)), "fault": [tuple(fault.points)]}
+    for sc in sb.joint_sets:  # persistent: all of it is joint (but slivers merged away), and on its own lines
+        assert sc.length == pytest.approx(sc.given, rel=0.01) and sc.length > 10, sc
+        for a, b in sc.segments:
+            assert any(_on(a, p, q, 1e-6) and _on(b, p, q, 1e-6) for p, q in lines[sc.name]), (sc.name, a, b)
+    assert all(list(e) in sb.joints or [e[0], e[1]] in sb.joints for sc in sb.joint_sets for e in sc.segments)
