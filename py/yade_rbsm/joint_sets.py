@@ -228,6 +228,23 @@ def _on(seg, trace, tol):
     return all(point_segment_distance(p, trace[0], trace[1]) <= tol for p in seg)
 
 
+def _overlap(seg, trace, tol):
+    """The part of the block edge *seg* that lies on the trace segment (on its line within *tol*), as a
+    segment of positive length, else None: a block's edge may run past a joint's end along a weld."""
+    (ax, ay), (bx, by) = trace
+    L = math.hypot(bx - ax, by - ay)
+    ux, uy = (bx - ax) / L, (by - ay) / L
+    if any(abs(ux * (p[1] - ay) - uy * (p[0] - ax)) > tol for p in seg):
+        return None
+    t0, t1 = ((p[0] - ax) * ux + (p[1] - ay) * uy for p in seg)
+    lo, hi = max(min(t0, t1), 0.0), min(max(t0, t1), L)
+    if hi - lo <= tol:
+        return None
+    if (lo, hi) == (min(t0, t1), max(t0, t1)):
+        return tuple(seg)  # the whole edge (its own coordinates, bit for bit)
+    return ((ax + lo * ux, ay + lo * uy), (ax + hi * ux, ay + hi * uy))
+
+
 def jointset_blocks(surface=None, base=None, sets=(), traces=(), min_area=None, outline=None, layers=(),
                     foundation=1.0, wall=1.0):
     """Blocks of the slope under the ground polyline *surface* above *base* (or inside the simple polygon
@@ -301,8 +318,15 @@ def _cut(pieces, region, sets, traces, extra, min_area):
     # a trace end meant to lie on the outline or on another trace (a bedding that daylights on the face)
     # is off it by round-off, and the exact cutter would take it for an end inside rock: every trace
     # reaches 1e-9 x the model's size past its ends (the overshoot dangles, and goes)
+    # (a polyline's inner vertices and a closed polyline's ends meet exactly: they are not moved)
     reach = 1e-9 * max(bbox[2] - bbox[0], bbox[3] - bbox[1])
-    cut_segs = [_extended(s, reach) for segs in source_segs for s in segs] + [tuple(s) for s in extra]
+    cut_segs = [_extended(sg, reach) for segs in source_segs[:len(sets)] for sg in segs]
+    for t in traces:
+        pts, closed = t.points, tuple(t.points[0]) == tuple(t.points[-1])
+        n = len(pts) - 1
+        cut_segs += [_extended((pts[i], pts[i + 1]), reach, start=i == 0 and not closed, end=i == n - 1 and not closed)
+                     for i in range(n)]
+    cut_segs += [tuple(sg) for sg in extra]
     seg_boxes = [_bbox_of(sg) for sg in cut_segs]
     blocks, welds = [], []
     slivers = dict(min_area=min_area, merged=[], merged_area=0.0, kept=[], kept_area=0.0)
@@ -323,17 +347,17 @@ def _cut(pieces, region, sets, traces, extra, min_area):
     scale = max(1.0, max(abs(c) for p in region for c in p))
     tol = 1e-9 * scale
     cuts = [SetCut(src, nm) for src, nm in zip(list(sets) + list(traces), names)]
-    faces = [[] for _ in cuts]  # every block edge on the set, from both sides of each joint
+    faces = [[] for _ in cuts]  # every block edge on the set (its part on it), from both sides of each joint
     kept = [set() for _ in cuts]  # indices of the set's traces that carry an edge
     for v in blocks:
         for i in range(len(v)):
             e = (v[i], v[(i + 1) % len(v)])
             for k, segs in enumerate(source_segs):
-                hit = next((j for j, sg in enumerate(segs) if _on(e, sg, tol)), None)
+                hit = next(((j, o) for j, sg in enumerate(segs) for o in [_overlap(e, sg, tol)] if o), None)
                 if hit is not None:
-                    faces[k].append(e)
-                    if not _on_outline(e, region, tol):
-                        kept[k].add(hit)
+                    faces[k].append(hit[1])
+                    if not _on_outline(hit[1], region, tol):
+                        kept[k].add(hit[0])
                     break
     for k, (sc, segs, f) in enumerate(zip(cuts, source_segs, faces)):
         # an edge on the outline is no joint (a set's line along the outline): blocks on both sides only
@@ -410,11 +434,12 @@ def jointset_blocks_dxf(filename, layers=None, outline_layer="OUTLINE", sets=(),
     return jointset_blocks(outline=d.outline, sets=sets, traces=traces, **kw)
 
 
-def _extended(seg, d):
+def _extended(seg, d, start=True, end=True):
+    """The segment reaching *d* past its start and end (where asked)."""
     (x0, y0), (x1, y1) = seg
     L = math.hypot(x1 - x0, y1 - y0)
     ux, uy = (x1 - x0) / L * d, (y1 - y0) / L * d
-    return ((x0 - ux, y0 - uy), (x1 + ux, y1 + uy))
+    return ((x0 - ux, y0 - uy) if start else (x0, y0), (x1 + ux, y1 + uy) if end else (x1, y1))
 
 
 def _on_outline(e, region, tol):

@@ -288,3 +288,17 @@ def test_every_builder_takes_joint_sets_and_traces(builder):
         for a, b in sc.segments:
             assert any(_on(a, p, q, 1e-6) and _on(b, p, q, 1e-6) for p, q in lines[sc.name]), (sc.name, a, b)
     assert all(list(e) in sb.joints or [e[0], e[1]] in sb.joints for sc in sb.joint_sets for e in sc.segments)
+
+
+def test_an_island_of_joints_is_joined_by_welds_not_dropped():
+    """A closed triangle of joints inside rock, touching nothing: on 05cde65 the cutter removed it (its joints
+    lost); now it is a block, joined to the rest by two horizontal welds from its extreme corners."""
+    box = [(0, 0), (10, 0), (10, 10), (0, 10)]
+    tri = [(3, 3), (7, 3), (5, 7)]
+    traces = [slope.Trace([tri[0], tri[1], tri[2], tri[0]], friction_angle=30, name="lens")]
+    sb = check_cut(slope.jointset_blocks(outline=box, traces=traces, foundation=0), box, traces=[tri + [tri[0]]])
+    assert any(sorted(b.vertices) == sorted(tri) for b in sb.free)
+    lens = sb.joint_sets[0]
+    perimeter = sum(math.dist(a, b) for a, b in zip(tri, tri[1:] + tri[:1]))
+    assert lens.length == pytest.approx(perimeter) and lens.given == pytest.approx(perimeter)
+    assert ((3.0, 3.0), (0.0, 3.0)) in sb.welds and ((7.0, 3.0), (10.0, 3.0)) in sb.welds

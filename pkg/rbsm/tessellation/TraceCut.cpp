@@ -4,6 +4,7 @@
 #include <pkg/rbsm/tessellation/ExactPieces.hpp>
 
 #include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/intersections.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Polygon_2.h>
 
@@ -93,29 +94,6 @@ namespace {
 		return !bridges.empty();
 	}
 
-	void removeIslands(Arr& arr, const std::vector<P2>& outline)
-	{
-		std::set<Arr::Halfedge_handle> island;
-		do { // find one island, then remove it (removing merges faces: the iterators go stale)
-			island.clear();
-			for (auto f = arr.faces_begin(); f != arr.faces_end() && island.empty(); ++f)
-				for (auto hole = f->inner_ccbs_begin(); hole != f->inner_ccbs_end() && island.empty(); ++hole) {
-					bool touches = false;
-					auto edges   = component((*hole)->source(), outline, touches);
-					if (!touches) island = std::move(edges);
-				}
-			for (auto h : island) arr.remove_edge(h);
-		} while (!island.empty());
-	}
-
-	std::vector<P2> boundary(Arr::Ccb_halfedge_const_circulator c)
-	{
-		std::vector<P2> v;
-		auto h = c;
-		do v.push_back(h->source()->point());
-		while (++h != c);
-		return v;
-	}
 	// Step 3: the faces on the left of the outline, then those reached across trace edges only, in
 	// discovery order (not the handles' addresses: the same blocks in the same order on every run).
 	std::vector<Arr::Face_handle> insideFaces(Arr& arr, const std::vector<P2>& outline)
@@ -142,6 +120,76 @@ namespace {
 		return inside;
 	}
 
+	// The nearest point where the horizontal ray from v towards dir (-1 or +1) meets an edge of arr
+	// that is not in skip (exact): the end of a weld from v.
+	P2 rayHit(Arr& arr, const P2& v, int dir, const std::set<Arr::Halfedge_handle>& skip)
+	{
+		const K::Ray_2 ray(v, K::Direction_2(dir, 0));
+		bool  found = false;
+		P2    best;
+		K::FT bestDist = 0;
+		for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+			if (skip.count(e) || skip.count(e->twin())) continue;
+			const S2 seg(e->source()->point(), e->target()->point());
+			const auto hit = CGAL::intersection(ray, seg);
+			if (!hit) continue;
+			P2 p;
+			if (const P2* q = boost::get<P2>(&*hit)) p = *q;
+			else if (const S2* c = boost::get<S2>(&*hit)) // along the ray: its nearer end
+				p = CGAL::compare_distance_to_point(v, c->source(), c->target()) == CGAL::SMALLER ? c->source() : c->target();
+			else continue;
+			if (p == v) continue;
+			const K::FT d = CGAL::abs(p.x() - v.x());
+			if (!found || d < bestDist) found = true, best = p, bestDist = d;
+		}
+		if (!found) throw std::logic_error("cutByTraces: a ray from an island of traces met nothing");
+		return best;
+	}
+
+	// Step 2b: a network of traces that touches neither the outline nor the traces that reach it (an
+	// island) is joined to the rest by two welds, horizontal from its leftmost and rightmost vertices,
+	// which cut the face around it in two (an island outside the region goes). Its joints are joints of
+	// the rock mass; the welds are no joints (bonded with the rock's strength, as the outline's cuts).
+	void joinIslands(Arr& arr, const std::vector<P2>& outline, std::vector<S2>& welds)
+	{
+		for (bool changed = true; changed;) {
+			changed = false;
+			const auto inside = insideFaces(arr, outline);
+			const std::set<Arr::Face_handle> in(inside.begin(), inside.end());
+			for (auto f = arr.faces_begin(); f != arr.faces_end() && !changed; ++f)
+				for (auto hole = f->inner_ccbs_begin(); hole != f->inner_ccbs_end() && !changed; ++hole) {
+					bool touches = false;
+					auto edges   = component((*hole)->source(), outline, touches);
+					if (touches) continue;
+					if (!in.count(f)) { // outside the region: it cuts nothing of it
+						for (auto h : edges) arr.remove_edge(h);
+						changed = true;
+						continue;
+					}
+					P2 lo = (*edges.begin())->source()->point(), hi = lo;
+					for (auto h : edges)
+						for (const P2& p : {h->source()->point(), h->target()->point()}) {
+							if (p < lo) lo = p;
+							if (hi < p) hi = p;
+						}
+					const P2 a = rayHit(arr, lo, -1, edges), b = rayHit(arr, hi, +1, edges);
+					welds.emplace_back(lo, a);
+					welds.emplace_back(hi, b);
+					CGAL::insert(arr, welds[welds.size() - 2]);
+					CGAL::insert(arr, welds.back());
+					changed = true; // (the handles went stale: look again)
+				}
+		}
+	}
+
+	std::vector<P2> boundary(Arr::Ccb_halfedge_const_circulator c)
+	{
+		std::vector<P2> v;
+		auto h = c;
+		do v.push_back(h->source()->point());
+		while (++h != c);
+		return v;
+	}
 	K::FT faceArea(Arr::Face_const_handle f)
 	{
 		const auto v = boundary(f->outer_ccb());
@@ -234,14 +282,16 @@ TraceCut cutByTraces(const Polygon& region_, const std::vector<Segment>& traces,
 	}
 	Arr arr;
 	CGAL::insert(arr, curves.begin(), curves.end()); // step 1
-	do { // step 2: until none is left (a bridge gone may leave an island or a dangling end)
+	do // step 2: until none is left (a bridge gone may leave a dangling end)
 		pruneDangling(arr);
-		removeIslands(arr, outline);
-	} while (removeBridges(arr));
+	while (removeBridges(arr));
+	std::vector<S2> islandWelds;
+	joinIslands(arr, outline, islandWelds); // step 2b
 
 	TraceCut out;
 	if (minArea > 0) mergeSlivers(arr, outline, minArea, out);
 	exact::Rounder rounded;
+	for (const auto& w : islandWelds) out.welds.push_back({rounded(w.source()), rounded(w.target())});
 	for (const auto& f : insideFaces(arr, outline)) {
 		std::vector<P2> face = boundary(f->outer_ccb());
 		if (f->number_of_inner_ccbs() != 0) {

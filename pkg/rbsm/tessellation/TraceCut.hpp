@@ -7,8 +7,10 @@
 //     round-off, and a trace through a vertex of the outline or of another trace meets it there.
 //  2. A trace that does not cut a block apart (a dangling end, a trace that ends inside rock) is
 //     removed edge by edge, as UDEC does: only a joint that separates two blocks is a joint; the
-//     length removed is not reported here (the Python side measures what is kept). A network of
-//     traces that reaches neither the outline nor the traces that do (an island) goes too.
+//     length removed is not reported here (the Python side measures what is kept); so does an edge
+//     with the same face on both sides (a bridge). A network of traces that reaches neither the
+//     outline nor the traces that do (an island) is joined to the rest by two horizontal welds from
+//     its leftmost and rightmost vertices (its joints are the rock mass's); outside the region it goes.
 //  3. The faces inside the region are found from the outline's edges (the region is on their left,
 //     counter-clockwise) and across the traces' edges only.
 //  3b. Slivers (faces below min_area) are merged into a neighbour: across the sliver's longest inner
@@ -33,7 +35,7 @@ namespace tess {
 
 	struct TraceCut {
 		std::vector<Polygon> blocks; ///< convex, counter-clockwise, no straight or repeated vertex
-		std::vector<Segment> welds;  ///< the diagonals of step 4, in rounded coordinates (block edges)
+		std::vector<Segment> welds;  ///< the diagonals of step 4 and the islands' welds, rounded (block edges)
 		std::size_t          faces = 0; ///< faces inside the region (before step 4)
 		std::size_t          split = 0; ///< non-convex faces cut into convex blocks
 		std::size_t          merged = 0; ///< slivers (area < minArea) merged into a neighbour
