@@ -246,11 +246,12 @@ def _overlap(seg, trace, tol):
 
 
 def jointset_blocks(surface=None, base=None, sets=(), traces=(), min_area=None, outline=None, layers=(),
-                    foundation=1.0, wall=1.0):
+                    foundation=1.0, wall=1.0, min_width=None):
     """Blocks of the slope under the ground polyline *surface* above *base* (or inside the simple polygon
     *outline*, any shape) cut by the JointSets *sets* and the *traces* (polylines or :class:`Trace`),
-    see the module docstring. *min_area* [m2]: the sliver limit (default 1 % of the square of the
-    smallest set spacing, or 1e-4 of the outline's area without sets). *layers*, *foundation*,
+    see the module docstring. *min_area* [m2] and *min_width* [m]: the sliver limits, by area and by
+    mean width 2 A / P (defaults: 1 % of the square of the smallest set spacing, or 1e-4 of the outline's
+    area without sets; 2 % of the smallest spacing, or none without sets). *layers*, *foundation*,
     *wall*: as for :func:`yade_rbsm.slope.brick_blocks` (with *outline*: a foundation under its lowest
     point). Returns a SlopeBlocks (pattern "joint sets") with ``joint_sets`` (a :class:`SetCut` per set
     and trace, in the order given), ``welds`` (the outline decomposition's cuts) and ``slivers``
@@ -280,8 +281,9 @@ def jointset_blocks(surface=None, base=None, sets=(), traces=(), min_area=None, 
     if min_area is None:
         min_area = 0.01 * min(js.spacing for js in sets) ** 2 if sets else 1e-4 * area
     min_area = number(who, "min_area", min_area, 0)
+    min_width = _min_width(min_width, sets, who)
     tops = [s for t, _ in layers if t is not None for s in zip(t[:-1], t[1:])]  # layer tops: bonded rock
-    vertex_lists, cuts, welds, slivers = _cut([region], region, sets, traces, tops, min_area)
+    vertex_lists, cuts, welds, slivers = _cut([region], region, sets, traces, tops, min_area, min_width)
     blocks = [S.Block(list(v), polygon_area(v), False, "slope") for v in vertex_lists]
     if layers:
         S._assign_layers(blocks, layers)
@@ -305,7 +307,13 @@ def _bbox_of(pts):
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def _cut(pieces, region, sets, traces, extra, min_area):
+def _min_width(min_width, sets, who):
+    if min_width is None:
+        return 0.02 * min(js.spacing for js in sets) if sets else 0.0
+    return number(who, "min_width", min_width, 0)
+
+
+def _cut(pieces, region, sets, traces, extra, min_area, min_width=0.0):
     """The convex blocks of *pieces* (simple polygons inside *region*) cut by the JointSets *sets*, the
     Traces *traces* and the segments *extra* (untagged cuts: layer tops), each piece with the CGAL cutter;
     returns (vertex lists, SetCuts merged by name, welds, slivers dict)."""
@@ -329,14 +337,14 @@ def _cut(pieces, region, sets, traces, extra, min_area):
     cut_segs += [tuple(sg) for sg in extra]
     seg_boxes = [_bbox_of(sg) for sg in cut_segs]
     blocks, welds = [], []
-    slivers = dict(min_area=min_area, merged=[], merged_area=0.0, kept=[], kept_area=0.0)
+    slivers = dict(min_area=min_area, min_width=min_width, merged=[], merged_area=0.0, kept=[], kept_area=0.0)
     for piece in pieces:
         x0, y0, x1, y1 = _bbox_of(piece)
         near = [sg for sg, (a0, b0, a1, b1) in zip(cut_segs, seg_boxes) if a0 <= x1 and a1 >= x0 and b0 <= y1 and b1 >= y0]
         if not near and len(pieces) > 1:  # (a convex piece no trace reaches: itself)
             blocks.append([tuple(p) for p in piece])
             continue
-        r = _tess.cut_by_traces(piece, near, min_area)
+        r = _tess.cut_by_traces(piece, near, min_area, min_width)
         blocks += [list(v) for v in r["blocks"]]
         welds += [tuple(map(tuple, w)) for w in r["welds"]]
         slivers["merged"] += [tuple(p) for p in r["merged"]]
@@ -385,12 +393,13 @@ def _checked(sets, traces, who):
     return sets, [t if isinstance(t, Trace) else Trace(points("%s: traces[%d]" % (who, k), t, 2)) for k, t in enumerate(traces)]
 
 
-def cut_by_joint_sets(sb, sets=(), traces=(), min_area=None, who="cut_by_joint_sets"):
+def cut_by_joint_sets(sb, sets=(), traces=(), min_area=None, who="cut_by_joint_sets", min_width=None):
     """The free blocks of the SlopeBlocks *sb* (any builder's: bricks, columns, Voronoi) cut by the
     JointSets *sets* and the *traces*, which carry their strength as in :func:`jointset_blocks`: the
     builders' way in for joint sets (their ``sets=`` and ``traces=``). A trace that ends inside a block
     cuts nothing of it (UDEC's rule); slivers below *min_area* (default: the builder's smallest block
-    x 1e-3, or 1 % of the smallest set spacing squared, the smaller) are merged into the rest of the
+    x 1e-3, or 1 % of the smallest set spacing squared, the smaller) or thinner than *min_width* (default
+    0: the pattern makes the shapes; a merge takes a piece of joint away) are merged into the rest of the
     block they were cut from. Returns *sb* with its free blocks replaced, ``joint_sets``, ``welds`` and
     ``slivers`` set, and the sets' joints added to ``sb.joints`` (found again after bonding)."""
     from . import slope as S
@@ -404,7 +413,8 @@ def cut_by_joint_sets(sb, sets=(), traces=(), min_area=None, who="cut_by_joint_s
         cands = [1e-3 * min(b.area for b in free)] + ([0.01 * min(js.spacing for js in sets) ** 2] if sets else [])
         min_area = min(cands)
     min_area = number(who, "min_area", min_area, 0)
-    vertex_lists, cuts, welds, slivers = _cut([b.vertices for b in free], sb.polygon, sets, traces, (), min_area)
+    min_width = _min_width(0.0 if min_width is None else min_width, sets, who)
+    vertex_lists, cuts, welds, slivers = _cut([b.vertices for b in free], sb.polygon, sets, traces, (), min_area, min_width)
     blocks = [S.Block(list(v), polygon_area(v), False, "slope") for v in vertex_lists]
     if sb.layers:
         S._assign_layers(blocks, sb.layers)
@@ -460,8 +470,8 @@ def report(sb):
                    % (len(sb.welds), sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in sb.welds)))
     s = sb.slivers
     if s["merged"] or s["kept"]:
-        out.append("  slivers below %.3g m2: %d merged into a neighbour (%.3g m2, at %s)%s" % (
-            s["min_area"], len(s["merged"]), s["merged_area"], ", ".join("(%.2f, %.2f)" % p for p in s["merged"][:5]),
+        out.append("  slivers (below %.3g m2 or %.3g m wide): %d merged into a neighbour (%.3g m2, at %s)%s" % (
+            s["min_area"], s.get("min_width", 0.0), len(s["merged"]), s["merged_area"], ", ".join("(%.2f, %.2f)" % p for p in s["merged"][:5]),
             "" if not s["kept"] else "; %d kept, no convex union (%.3g m2, at %s)" % (
                 len(s["kept"]), s["kept_area"], ", ".join("(%.2f, %.2f)" % p for p in s["kept"][:5]))))
     return "\n".join(out)

@@ -302,3 +302,17 @@ def test_an_island_of_joints_is_joined_by_welds_not_dropped():
     perimeter = sum(math.dist(a, b) for a, b in zip(tri, tri[1:] + tri[:1]))
     assert lens.length == pytest.approx(perimeter) and lens.given == pytest.approx(perimeter)
     assert ((3.0, 3.0), (0.0, 3.0)) in sb.welds and ((7.0, 3.0), (10.0, 3.0)) in sb.welds
+
+
+def test_a_long_thin_strip_is_a_sliver_too():
+    """Issue 36: a sliver may be long: two joints 5 cm apart across a 10 m box make a 0.5 m2 strip, above the
+    area limit but 5 cm wide (a block that sets the time step of the whole model). The mean width 2 A / P
+    limit (min_width, default 2 % of the smallest spacing) merges it; without it, it stays."""
+    box = [(0, 0), (10, 0), (10, 10), (0, 10)]
+    t1, t2 = [(-1, 4.0), (11, 4.0)], [(-1, 4.05), (11, 4.05)]
+    kw = dict(outline=box, traces=[t1, t2], min_area=0.1, foundation=0)
+    strip = check_cut(slope.jointset_blocks(min_width=0.0, **kw), box, traces=[t1, t2])
+    assert len(strip.free) == 3 and min(b.area for b in strip.free) == pytest.approx(0.5)
+    merged = check_cut(slope.jointset_blocks(min_width=0.1, **kw), box, traces=[t1, t2])
+    assert len(merged.free) == 2 and merged.slivers["merged_area"] == pytest.approx(0.5)
+    assert "0.1 m wide" in J.report(merged)

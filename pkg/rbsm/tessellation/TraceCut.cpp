@@ -211,20 +211,31 @@ namespace {
 		return {x / double(v.size()), y / double(v.size())};
 	}
 
-	// Step 3b: a face below minArea is merged with the neighbour across its longest inner edge whose
-	// union is convex (the edge removed; tried edges put back), smallest first; one that no
-	// neighbour takes stays, reported.
-	void mergeSlivers(Arr& arr, const std::vector<P2>& outline, double minArea, TraceCut& out)
+	// A face's mean width 2 A / P (a thin strip w x L: about w), the measure of a sliver that is long.
+	double meanWidth(Arr::Face_const_handle f, double area)
+	{
+		const auto v = boundary(f->outer_ccb());
+		double     perimeter = 0;
+		for (std::size_t i = 0; i < v.size(); ++i) perimeter += std::sqrt(CGAL::to_double(CGAL::squared_distance(v[i], v[(i + 1) % v.size()])));
+		return perimeter > 0 ? 2 * area / perimeter : 0;
+	}
+
+	// Step 3b: a face below minArea, or thinner than minWidth (mean width), is merged with the neighbour
+	// across its longest inner edge whose union is convex (the edge removed; tried edges put back), the
+	// worst first (the least of area / minArea and width / minWidth); one that no neighbour takes stays,
+	// reported.
+	void mergeSlivers(Arr& arr, const std::vector<P2>& outline, double minArea, double minWidth, TraceCut& out)
 	{
 		std::set<P2> kept; // the least vertex of each sliver that stays
 		for (;;) {
 			Arr::Face_handle sliver;
-			K::FT            least = minArea;
+			double           worst = 1, least = 0;
 			for (const auto& f : insideFaces(arr, outline)) {
 				const auto v = boundary(f->outer_ccb());
 				if (kept.count(*std::min_element(v.begin(), v.end()))) continue;
-				const K::FT a = faceArea(f);
-				if (a < least) least = a, sliver = f;
+				const double a     = CGAL::to_double(faceArea(f));
+				const double score = std::min(minArea > 0 ? a / minArea : 1.0, minWidth > 0 ? meanWidth(f, a) / minWidth : 1.0);
+				if (score < worst) worst = score, sliver = f, least = a;
 			}
 			if (sliver == Arr::Face_handle()) return;
 			const auto v = boundary(sliver->outer_ccb());
@@ -252,20 +263,21 @@ namespace {
 			const Point where = centroid(v);
 			if (merged) {
 				++out.merged;
-				out.mergedArea += CGAL::to_double(least);
+				out.mergedArea += least;
 				out.mergedAt.push_back(where);
 			} else {
 				kept.insert(*std::min_element(v.begin(), v.end()));
 				out.kept.push_back(where);
-				out.keptArea += CGAL::to_double(least);
+				out.keptArea += least;
 			}
 		}
 	}
 } // namespace
 
-TraceCut cutByTraces(const Polygon& region_, const std::vector<Segment>& traces, double minArea)
+TraceCut cutByTraces(const Polygon& region_, const std::vector<Segment>& traces, double minArea, double minWidth)
 {
 	if (!(std::isfinite(minArea) && minArea >= 0)) throw std::invalid_argument("min_area must be a finite number >= 0");
+	if (!(std::isfinite(minWidth) && minWidth >= 0)) throw std::invalid_argument("min_width must be a finite number >= 0");
 	const Polygon   region = counterClockwise(region_);
 	std::vector<P2> outline;
 	for (const auto& p : region) outline.emplace_back(p[0], p[1]);
@@ -289,7 +301,7 @@ TraceCut cutByTraces(const Polygon& region_, const std::vector<Segment>& traces,
 	joinIslands(arr, outline, islandWelds); // step 2b
 
 	TraceCut out;
-	if (minArea > 0) mergeSlivers(arr, outline, minArea, out);
+	if (minArea > 0 || minWidth > 0) mergeSlivers(arr, outline, minArea, minWidth, out);
 	exact::Rounder rounded;
 	for (const auto& w : islandWelds) out.welds.push_back({rounded(w.source()), rounded(w.target())});
 	for (const auto& f : insideFaces(arr, outline)) {

@@ -13,7 +13,8 @@
 //     its leftmost and rightmost vertices (its joints are the rock mass's); outside the region it goes.
 //  3. The faces inside the region are found from the outline's edges (the region is on their left,
 //     counter-clockwise) and across the traces' edges only.
-//  3b. Slivers (faces below min_area) are merged into a neighbour: across the sliver's longest inner
+//  3b. Slivers (faces below min_area, or thinner than min_width: mean width 2 A / P) are merged into a
+//     neighbour: across the sliver's longest inner
 //     edge whose removal leaves a convex face (a sliver between two joints at a small angle goes
 //     with the block on the other side of its longest joint); the joint piece removed is reported
 //     by the Python side. A sliver that no neighbour takes convexly stays, reported.
@@ -38,7 +39,7 @@ namespace tess {
 		std::vector<Segment> welds;  ///< the diagonals of step 4 and the islands' welds, rounded (block edges)
 		std::size_t          faces = 0; ///< faces inside the region (before step 4)
 		std::size_t          split = 0; ///< non-convex faces cut into convex blocks
-		std::size_t          merged = 0; ///< slivers (area < minArea) merged into a neighbour
+		std::size_t          merged = 0; ///< slivers (area < minArea or mean width < minWidth) merged into a neighbour
 		double               mergedArea = 0;
 		std::vector<Point>   mergedAt;   ///< their vertex averages
 		std::vector<Point>   kept;       ///< slivers that no neighbour takes (no convex union): still blocks
@@ -46,10 +47,10 @@ namespace tess {
 	};
 
 	/// The region (either orientation, see regionProblem) cut along the traces (segments; parts
-	/// outside the region are ignored); faces below minArea (> 0) merged as step 3b says. std::invalid_argument for a bad region or a degenerate or
+	/// outside the region are ignored); faces below minArea or thinner than minWidth (mean width 2 A / P) merged as step 3b says. std::invalid_argument for a bad region or a degenerate or
 	/// non-finite trace; std::runtime_error if a block is degenerate after rounding or a face holds an
 	/// island of traces, naming it.
-	TraceCut cutByTraces(const Polygon& region, const std::vector<Segment>& traces, double minArea = 0);
+	TraceCut cutByTraces(const Polygon& region, const std::vector<Segment>& traces, double minArea = 0, double minWidth = 0);
 
 } // namespace tess
 } // namespace rbsm

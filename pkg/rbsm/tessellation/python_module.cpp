@@ -77,7 +77,7 @@ py::str polygonProblemPy(const py::object& poly)
 	return py::str(rbsm::polygonProblem(v));
 }
 
-py::dict cutByTracesPy(const py::object& region, const py::object& traces, double minArea)
+py::dict cutByTracesPy(const py::object& region, const py::object& traces, double minArea, double minWidth)
 {
 	std::vector<Segment> segs;
 	const long n = py::len(traces);
@@ -86,7 +86,7 @@ py::dict cutByTracesPy(const py::object& region, const py::object& traces, doubl
 		if (s.size() != 2) throw std::invalid_argument("a trace must be a pair of points ((x0, y0), (x1, y1))");
 		segs.push_back({s[0], s[1]});
 	}
-	const TraceCut t = cutByTraces(toPolygon(region), segs, minArea);
+	const TraceCut t = cutByTraces(toPolygon(region), segs, minArea, minWidth);
 	py::list blocks, welds;
 	for (const auto& b : t.blocks) blocks.append(fromPolygon(b));
 	for (const auto& w : t.welds) welds.append(fromPolygon({w[0], w[1]}));
@@ -114,9 +114,9 @@ BOOST_PYTHON_MODULE(yade_rbsm_tessellation)
 	        "n sites uniform inside region from std::mt19937_64(seed); dart throwing with min_distance > 0.");
 	py::def("voronoi_clip", voronoiClipPy, (py::arg("region"), py::arg("sites"), py::arg("min_area") = 0.0),
 	        "Voronoi cells of sites clipped to region, cut into convex CCW blocks: dict(blocks, site, cells, split, dropped, dropped_area).");
-	py::def("cut_by_traces", cutByTracesPy, (py::arg("region"), py::arg("traces"), py::arg("min_area") = 0.0),
+	py::def("cut_by_traces", cutByTracesPy, (py::arg("region"), py::arg("traces"), py::arg("min_area") = 0.0, py::arg("min_width") = 0.0),
 	        "region cut along the traces (segments) into convex CCW blocks, exactly; traces that do not separate blocks are "
-	        "removed (UDEC's rule); faces below min_area merged into a neighbour (convex union): dict(blocks, welds (diagonals cutting non-convex faces), faces, split, merged (sliver places), merged_area, kept_slivers, kept_area).");
+	        "removed (UDEC's rule); faces below min_area or thinner than min_width (2 A / P) merged into a neighbour (convex union): dict(blocks, welds (diagonals cutting non-convex faces), faces, split, merged (sliver places), merged_area, kept_slivers, kept_area).");
 	py::def("union_area", unionAreaPy, py::arg("polygons"), "Area of the union of simple polygons (exact, then rounded).");
 	py::def("polygon_problem", polygonProblemPy, py::arg("polygon"),
 	        "'' if Polygon2D accepts the vertices (convex, CCW, no repeated or collinear vertex), else the problem.");
