@@ -1,7 +1,7 @@
 # A jointed rock slope from two joint sets to a factor of safety and a runout, in YADE's loop.
 #   build/yade-rbsm -n -x scripts/tutorial_jointed_slope.py [out_dir]
 import math, os, sys
-from yade_rbsm import slope, joint_sets
+from yade_rbsm import slope, joint_sets, snapshots
 out = sys.argv[1] if len(sys.argv) > 1 else "out/tutorial"
 os.makedirs(out, exist_ok=True)
 rock = RbsmMat(young=2e8, poisson=0.2, density=2600, frictionAngle=math.radians(40), cohesion=1e6,
@@ -13,6 +13,7 @@ blocks = slope.jointset_blocks([(0, 20), (18, 20), (30, 0), (48, 0)], base=-6, s
 print(joint_sets.report(blocks))
 model = slope.SlopeModel(blocks, rock)
 model.build()              # blocks in O.bodies, engines(), joints bonded at the rock's strength
+snapshots.snapshot(os.path.join(out, "blocks.png"), "two joint sets", O=O)
 model.settle()             # in-situ stress (UDEC's practice: elastic equilibrium first)
 model.give_joint_sets()    # then the joints' own strength, and equilibrium again
 r = model.fos()            # strength reduction, and what it is compared with

@@ -31,7 +31,7 @@ def test_tutorial_runs_and_its_scene_resumes(tmp_path):
     assert m and 1.0 < float(m.group(1)) < 1.3, p.stdout[-3000:]
     d = re.search(r"dynamic +max_displacement ([0-9.]+)", p.stdout)
     assert d and float(d.group(1)) > 0.1, p.stdout[-2000:]  # F = 1.3 > FS: it slides
-    for f in ("fos.md", "report.md", "slope.yade.gz"):
+    for f in ("blocks.png", "fos.md", "report.md", "slope.yade.gz"):
         assert os.path.getsize(str(tmp_path / f)) > 0, f
     assert "Warnings: none (conclusive)" in open(str(tmp_path / "fos.md")).read()
     assert "| factor of safety |" in open(str(tmp_path / "report.md")).read()
