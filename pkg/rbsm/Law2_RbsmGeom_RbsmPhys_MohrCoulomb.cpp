@@ -192,6 +192,35 @@ namespace {
 	}
 }
 
+namespace {
+	// The height of the phreatic polyline (x strictly increasing) at x, level beyond its ends.
+	Real phreaticHeight(const std::vector<Vector2r>& line, Real x)
+	{
+		if (x <= line.front().x()) return line.front().y();
+		for (std::size_t i = 1; i < line.size(); ++i)
+			if (x <= line[i].x()) return line[i - 1].y() + (line[i].y() - line[i - 1].y()) * (x - line[i - 1].x()) / (line[i].x() - line[i - 1].x());
+		return line.back().y();
+	}
+
+	// Water in the joint: the pore pressure u_k = γw (h(x_k) − y_k) ≥ 0 at each point pushes the blocks
+	// apart (force u_k a_k along the normal on body 2, as a compression would); returns Σ u_k a_k.
+	Real addWater(const RbsmGeom& g, const JointStep& j, const std::vector<Vector2r>& line, Real gammaW, int n, JointSums& sum)
+	{
+		Real total = 0;
+		for (int k = 0; k < n; k++) {
+			const Real     s = g.rule->s[k];
+			const Vector2r x = g.p0 + s * j.seg;
+			const Real     u = gammaW * std::max<Real>(0, phreaticHeight(line, x.x()) - x.y());
+			if (u <= 0) continue;
+			const Vector2r f = u * g.rule->w[k] * j.area * g.normal;
+			sum.force += f;
+			sum.momentP0 += s * cross(j.seg, f);
+			total += u * g.rule->w[k] * j.area;
+		}
+		return total;
+	}
+}
+
 bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
 	RbsmGeom& g = static_cast<RbsmGeom&>(*ig);
@@ -230,6 +259,8 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	else
 		for (int k = 0; k < n; k++)
 			addPoint(g, p, j, k, sum);
+	if (!phreatic.empty() && (p.water || waterAll)) p.waterForce = addWater(g, j, phreatic, waterUnitWeight, n, sum);
+	else if (p.waterForce != 0) p.waterForce = 0; // the water was taken away
 	const Real torque2 = sum.momentP0 + cross(g.p0 - g.centroid2, sum.force);
 	const Real torque1 = -(sum.momentP0 + cross(g.p0 - g.centroid1, sum.force));
 	p.normalForce      = sum.normalForce;
@@ -240,7 +271,8 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	// Open everywhere and clearly apart: the joint is gone. "Clearly": beyond round-off of the
 	// block size, so that two blocks resting edge to edge with zero overlap keep their contact
 	// instead of losing and re-making it every step.
-	if (!sum.carries && g.separation > 1e-9 * (g.h1 + g.h2)) return false;
+	// A wet joint stays while the geometry keeps it: the water fills a crack that opens (Hoek & Bray's V).
+	if (!sum.carries && p.waterForce == 0 && g.separation > 1e-9 * (g.h1 + g.h2)) return false;
 
 	const Vector3r f3(sum.force.x(), sum.force.y(), 0);
 	scene->forces.addForce(I->getId1(), -f3);

@@ -14,6 +14,12 @@ public:
 	{
 		if (!(std::isfinite(dampingRatio) && dampingRatio >= 0))
 			throw std::invalid_argument("Law2_RbsmGeom_RbsmPhys_MohrCoulomb.dampingRatio: must be a finite number >= 0 (got " + std::to_string(dampingRatio) + ")");
+		if (!(std::isfinite(waterUnitWeight) && waterUnitWeight >= 0))
+			throw std::invalid_argument("Law2_RbsmGeom_RbsmPhys_MohrCoulomb.waterUnitWeight: must be a finite number >= 0 (got " + std::to_string(waterUnitWeight) + ")");
+		for (std::size_t i = 0; i < phreatic.size(); ++i)
+			if (!(std::isfinite(phreatic[i].x()) && std::isfinite(phreatic[i].y())) || (i > 0 && !(phreatic[i].x() > phreatic[i - 1].x())))
+				throw std::invalid_argument("Law2_RbsmGeom_RbsmPhys_MohrCoulomb.phreatic: point " + std::to_string(i)
+				                            + " is not finite or its x does not increase (a polyline of strictly increasing x)");
 	}
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_RbsmGeom_RbsmPhys_MohrCoulomb, LawFunctor,
@@ -29,7 +35,14 @@ public:
 		"= Σ (σn n + τ t) a_k, opposite on body 1). With O.trackEnergy: 'elastPotential' (spring energy), 'plastDissip' "
 		"(friction's work on the plastic slip), 'jointRelease' (spring energy lost without friction work: points that open or break, "
 		"contact length that goes, the rest of a return to the friction surface) and 'viscDamp' if dampingRatio > 0, so that "
-		"with NewtonIntegrator's 'kinetic' and 'gravWork' O.energy.total() stays constant. A joint that is open everywhere and separated is removed.",
+		"with NewtonIntegrator's 'kinetic' and 'gravWork' O.energy.total() stays constant. A joint that is open everywhere and separated is removed.\n\n"
+		"Water (UDEC's hydrostatic joint pressure): with a :yref:`phreatic<Law2_RbsmGeom_RbsmPhys_MohrCoulomb.phreatic>` surface, each "
+		"point of a joint that takes water (:yref:`RbsmPhys.water`, or every joint with :yref:`waterAll<Law2_RbsmGeom_RbsmPhys_MohrCoulomb.waterAll>`) "
+		"below it has the pore pressure u = γw·(h(x) − y), which pushes the two blocks apart with u·a_k; the springs carry the "
+		"effective stress, so the strength is c + σn′ tanφ with σn′ = σn − u. The water stays as given (no flow); its work is not in O.energy.",
+		((std::vector<Vector2r>, phreatic, , Attr::triggerPostLoad, "The phreatic surface (water table) [m], a polyline of strictly increasing x in the blocks' plane, continued level beyond its ends; empty (default): no water, no cost."))
+		((Real, waterUnitWeight, 9810, Attr::triggerPostLoad, "Unit weight of the water γw [N/m³]."))
+		((bool, waterAll, false, , "Every joint takes water (UDEC: every contact), not only those with RbsmPhys.water."))
 		((Real, dampingRatio, 0, Attr::triggerPostLoad, "Viscous contact damping as a fraction of critical damping of the joint (normal and shear), ξ; 0 disables it (no cost). The shear dashpot acts while the joint sticks, and spring and dashpot together stay within the Mohr-Coulomb strength of the springs' normal force: the dashpot damps, it adds no friction."))
 		((int, plastDissipIx, -1, (Attr::hidden | Attr::noSave), "Index of plastDissip in O.energy."))
 		((int, elastPotentialIx, -1, (Attr::hidden | Attr::noSave), "Index of elastPotential in O.energy."))

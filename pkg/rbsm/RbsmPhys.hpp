@@ -120,6 +120,8 @@ public:
 		((Real, tanPhi, 0, , "tan φ of the joint friction angle; finite, >= 0."))
 		((Real, tensileStrength, 0, , "Tensile strength σt of the joint while intact [Pa]; finite, >= 0."))
 		((bool, ductile, false, , "Slip keeps the cohesion (perfectly plastic); only tension breaks the joint (:yref:`RbsmMat.ductile`)."))
+		((bool, water, false, , "The joint takes the pore pressure of the law's phreatic surface (:yref:`Law2_RbsmGeom_RbsmPhys_MohrCoulomb.phreatic`; yade_rbsm.slope.set_water sets it on the joint sets' joints)."))
+		((Real, waterForce, 0, Attr::readonly, "Force of the water in the joint at the last step, Σ u_k a_k [N] (pushing its blocks apart)."))
 		((Real, dampingCoefficient, 0, Attr::readonly, "Viscous traction per relative velocity [Pa·s/m] (from the law's dampingRatio; saved, so that RbsmTimeStepper.estimate() of a loaded scene is right before its first step)."))
 		((Real, normalForce, 0, Attr::readonly, "Resultant normal force of the joint [N] (> 0 compression), Σ σn_k a_k."))
 		((Real, shearForce, 0, Attr::readonly, "Resultant shear force of the joint [N] along the contact tangent, Σ τ_k a_k."))

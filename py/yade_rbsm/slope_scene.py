@@ -6,7 +6,7 @@ import json
 import math
 import numbers
 
-__all__ = ["build_scene", "break_crack", "joints_on", "joints_of", "break_joints", "set_joint_strength", "give_joint_sets", "joint_sets",
+__all__ = ["build_scene", "break_crack", "joints_on", "joints_of", "set_water", "break_joints", "set_joint_strength", "give_joint_sets", "joint_sets",
            "apply_joint_sets", "bond_and_break", "unbalanced_ratio", "settle"]
 
 
@@ -334,6 +334,8 @@ def _give(js, joints, F=1.0, reduce_tensile=False):
                 changed = True
         if js["ductile"] is not None:
             ph.ductile = bool(js["ductile"])
+        if js.get("water") and not ph.water:  # a contact made along a wet set takes the water
+            ph.water = True
         n += changed
     return n
 
@@ -411,6 +413,56 @@ def give_joint_sets(sb):
         n += set_joint_strength(polylines, src.cohesion, phi, tensile_strength=src.tensile_strength, ductile=src.ductile,
                                 normal_stiffness=src.kn, shear_stiffness=src.ks, name=sc.name)
     return n
+
+
+def set_water(phreatic, joints="sets", unit_weight=9810.0):
+    """Water in the joints (UDEC's hydrostatic joint pressure, seed's landslide trigger): below the phreatic
+    surface *phreatic* (a polyline of strictly increasing x [m], continued level beyond its ends) each point
+    of a wet joint has the pore pressure u = unit_weight x depth below it, which pushes its blocks apart;
+    the joint's strength is then c + (σn - u) tan(phi) (Law2_RbsmGeom_RbsmPhys_MohrCoulomb.phreatic).
+    *joints*: "sets" (default) for the joints of the scene's joint sets and traces (set_joint_strength,
+    jointset_blocks; contacts made later along them too), a tension crack given as a trace included; "all"
+    for every joint, the rock's bonded ones too (UDEC: every contact); or a list of set names. The water
+    is kept with the scene (O.engines, O.tags), so strength reduction, fos() and dynamic runs take it; it
+    stays as given (no flow): set it again to raise it. None removes it. Returns the number of joints wet."""
+    from yade import O, Vector2
+    from . import omega
+    from .checks import number
+    from .geometry import monotone
+    law = omega.engine("law", O)
+    if phreatic is None:
+        law.phreatic = []
+        for I in omega.joints(O):
+            I.phys.water = False
+        O.tags[_SETS_TAG] = json.dumps([dict(js, water=False) for js in joint_sets()])
+        return 0
+    line = monotone("set_water: phreatic", phreatic)  # (every check before any change: a refusal changes nothing)
+    unit_weight = number("set_water", "unit_weight", unit_weight, 0)
+    sets = joint_sets()
+    names = None if joints in ("sets", "all") else list(joints)
+    if names is not None:
+        known = {js.get("name") for js in sets}
+        missing = [n for n in names if n not in known]
+        if missing:
+            raise ValueError("set_water: no joint set called %s (the scene's: %s)" % (
+                ", ".join(map(repr, missing)), ", ".join(repr(n) for n in known) or "none"))
+    elif joints == "sets" and not sets:
+        raise ValueError("set_water: the scene has no joint sets (set_joint_strength, jointset_blocks): give "
+                         "joints='all' for water in every joint")
+    law.waterUnitWeight = unit_weight
+    law.phreatic = [Vector2(x, y) for x, y in line]
+    law.waterAll = joints == "all"
+    if joints == "all":
+        return sum(1 for _ in omega.joints(O))
+    wet = set()
+    for js in sets:
+        js["water"] = names is None or js.get("name") in names
+        for I in joints_on(js["polylines"], js["tol"]):  # (a set not named: dry)
+            I.phys.water = js["water"]
+            if js["water"]:
+                wet.add((I.id1, I.id2))
+    O.tags[_SETS_TAG] = json.dumps(sets)
+    return len(wet)
 
 
 def unbalanced_ratio(ids=None, gravity=None):

@@ -2,9 +2,12 @@
 # (a 60 deg face 12 m high, a bedding dipping 30 deg that daylights 3 m up the face, c 20 kPa, phi 30 deg,
 # a vertical tension crack at x = 22 m, c 0, phi 20 deg) as an outline and two traces that carry their
 # strength; the rock is one block cut only where the outline is non-convex (welds), no set_joint_strength.
-#   yade-rbsm -n -x jointset_plane.py
+#   yade-rbsm -n -x jointset_plane.py [ZW]
+# ZW [m] > 0: water in the tension crack to ZW above its base and along the bedding down to the daylight point
+# (slope.set_water; Hoek & Bray's U = gw zw A / 2 on the plane and V = gw zw^2 / 2 in the crack).
 import json
 import math
+import sys
 
 from yade import O, wrapper
 
@@ -21,7 +24,13 @@ cb, phib = 20e3, math.radians(30)
 wedge = [(xd, yd), (xc, yc), (xc, H), (xcrest, H)]
 W = rho * g * 0.5 * sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(wedge, wedge[1:] + wedge[:1]))
 L = (xc - xd) / math.cos(psi)
-closed = (cb * L + W * math.cos(psi) * math.tan(phib)) / (W * math.sin(psi))
+zw, gw = (float(sys.argv[1]) if len(sys.argv) > 1 else 0.0), 9810.0
+U, V = 0.5 * gw * zw * L, 0.5 * gw * zw ** 2
+def hoek_bray(U, V):
+    return (cb * L + (W * math.cos(psi) - U - V * math.sin(psi)) * math.tan(phib)) / (W * math.sin(psi) + V * math.cos(psi))
+
+
+closed, closed_no_crack_water = hoek_bray(U, V), hoek_bray(U, 0.0)
 rock = wrapper.RbsmMat(young=2e8, poisson=0.2, density=rho, frictionAngle=math.radians(45), cohesion=5e6,
                        tensileStrength=2e6, ductile=True)
 O.materials.append(rock)
@@ -35,6 +44,17 @@ O.engines = yr.engines(enlarge=0.01)
 sl.bond_and_break(sb, give_sets=False)  # an elastic equilibrium first, then the joints' strength (UDEC's practice)
 sl.settle(tol=1e-4, max_steps=60000, check=200, density_scaling=True)
 given = sl.give_joint_sets(sb)
+wet = sl.set_water([(xd, yd), (xc, yc + zw)], joints="sets") if zw > 0 else 0
+if zw > 0:
+    sl.settle(tol=1e-4, max_steps=60000, check=200, density_scaling=True)
+water = {n: sum(I.phys.waterForce for I in sl.joints_of(n)) for n in ("bedding", "tension crack")}
+water_errors = []
+for bad in (dict(phreatic=[(5, 1), (2, 3)]), dict(phreatic=[(0, 1), (9, 2)], joints=["fault"]),
+            dict(phreatic=[(0, 1), (9, 2)], unit_weight=-1)):
+    try:
+        sl.set_water(**bad)
+    except ValueError as e:
+        water_errors.append(str(e))
 on = {n: [(I.phys.cohesion, I.phys.tanPhi) for I in sl.joints_on([t.points])] for n, t in (("bedding", bedding), ("crack", crack))}
 by_name = {n: [(I.phys.cohesion, I.phys.tanPhi) for I in sl.joints_of(n)] for n in ("bedding", "tension crack")}
 try:
@@ -43,5 +63,5 @@ except ValueError as e:
     unknown = str(e)
 r = strength_reduction(start=1.0, grow=1.2, rtol=0.005, density_scaling=True, max_steps=8000, check=200, d_fail=0.1,
                        verbose=False)
-print("RESULT " + json.dumps(dict(fs=r.fs, lo=r.lo, hi=r.hi, closed=closed, blocks=len(sb.free), welds=len(sb.welds), given=given, by_name=by_name, unknown=unknown,
+print("RESULT " + json.dumps(dict(fs=r.fs, lo=r.lo, hi=r.hi, closed=closed, blocks=len(sb.free), welds=len(sb.welds), given=given, wet=wet, water_errors=water_errors, water=water, U=U, V=V, closed_u=closed_no_crack_water, by_name=by_name, unknown=unknown,
                                   on=on, tan_rock=math.tan(rock.frictionAngle))))

@@ -203,3 +203,20 @@ def test_a_voronoi_slope_takes_a_fault_with_its_strength():
     r = result_of("builder_sets.py")
     assert len(r["on"]) >= 8 and all(c == 0 and t == pytest.approx(math.tan(math.radians(20))) for c, t in r["on"]), r
     assert r["others"] > 100 and 2e4 in r["others_c"], r
+
+
+def test_water_on_the_bedding_of_a_plane_failure():
+    """jointset_plane.py 2 (issue 40): water 2 m deep in the tension crack and down the bedding to the daylight
+    point (slope.set_water on the joint sets). Measured: the bedding's water force 117 197 N against Hoek &
+    Bray's U = 116 311 N (+0.8 %), the crack's 20 499 N against V = 19 620 N (+4.5 %: two Gauss points on a
+    pressure that stops at the water line); strength reduction 1.3444 against Hoek & Bray with U alone
+    1.3452, while with V too it is 1.2893: the crack opens as the wedge starts to slide and its contact,
+    which carries the water, goes (a known gap: water in an opening crack, issue 40)."""
+    r = result_of("jointset_plane.py", "2")
+    assert r["wet"] == 2, r
+    assert r["water"]["bedding"] == pytest.approx(r["U"], rel=0.01), r
+    assert r["water"]["tension crack"] == pytest.approx(r["V"], rel=0.05), r
+    assert r["fs"] == pytest.approx(r["closed_u"], rel=0.01), r
+    assert r["fs"] < 0.93 * 1.4818, r  # the water lowers it (dry: 1.4818)
+    e = r["water_errors"]  # (after the strength reduction: refused values leave the water as it was)
+    assert len(e) == 3 and "phreatic" in e[0] and "no joint set called 'fault'" in e[1] and "unit_weight" in e[2], e
