@@ -390,8 +390,9 @@ def bond_and_break(sb, give_sets=True):
 
 def give_joint_sets(sb):
     """The strength of the joint sets and traces of :func:`slope.jointset_blocks` to their joints, once
-    bonded (:func:`bond_and_break` does it unless told not to): :func:`set_joint_strength` with the block
-    edges each set kept, so that the sets are kept with the scene as any set_joint_strength's. A set
+    bonded (:func:`bond_and_break` does it unless told not to): :func:`set_joint_strength` along the
+    set's traces that cut a joint (SetCut.traces), with its name, so that the sets are kept with the scene
+    as any set_joint_strength's and found by :func:`joints_of`. A set
     without a friction angle takes the rock's: the least tan(phi) its joints got from their blocks'
     materials. Returns the number of joints given a set's strength."""
     n = 0
