@@ -62,7 +62,7 @@ _interp_y = interp_y  # the name safety.py and tests used
 
 __all__ = ["Block", "SlopeBlocks", "JointSet", "Trace", "jointset_blocks", "jointset_blocks_dxf", "fos", "FosResult", "SlopeModel", "brick_blocks", "column_blocks", "voronoi_slope_blocks", "slope_polygon",
            "cut_polygons", "polygon_area", "region_area", "check_polygon", "build_scene", "bond_and_break",
-           "break_crack", "joints_on", "joints_of", "set_water", "break_joints", "set_joint_strength", "give_joint_sets", "joint_sets", "apply_joint_sets",
+           "break_crack", "joints_on", "joints_of", "set_water", "set_seismic", "break_joints", "set_joint_strength", "give_joint_sets", "joint_sets", "apply_joint_sets",
            "unbalanced_ratio", "settle"]
 
 
@@ -454,9 +454,10 @@ def _meets_region(line, surf, base):
 
 # the scene part (needs YADE) lives in slope_scene.py; its names stay importable from here
 _scene = _sibling("slope_scene")
-(build_scene, break_crack, joints_on, joints_of, set_water, break_joints, set_joint_strength, give_joint_sets, joint_sets,
+(build_scene, break_crack, joints_on, joints_of, set_water, set_seismic, break_joints, set_joint_strength, give_joint_sets, joint_sets,
  apply_joint_sets, bond_and_break, unbalanced_ratio, settle) = (
-    _scene.build_scene, _scene.break_crack, _scene.joints_on, _scene.joints_of, _scene.set_water, _scene.break_joints,
+    _scene.build_scene, _scene.break_crack, _scene.joints_on, _scene.joints_of, _scene.set_water, _scene.set_seismic,
+    _scene.break_joints,
     _scene.set_joint_strength,
     _scene.give_joint_sets,
     _scene.joint_sets, _scene.apply_joint_sets, _scene.bond_and_break, _scene.unbalanced_ratio, _scene.settle)

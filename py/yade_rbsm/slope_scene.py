@@ -6,7 +6,7 @@ import json
 import math
 import numbers
 
-__all__ = ["build_scene", "break_crack", "joints_on", "joints_of", "set_water", "break_joints", "set_joint_strength", "give_joint_sets", "joint_sets",
+__all__ = ["build_scene", "break_crack", "joints_on", "joints_of", "set_water", "set_seismic", "break_joints", "set_joint_strength", "give_joint_sets", "joint_sets",
            "apply_joint_sets", "bond_and_break", "unbalanced_ratio", "settle"]
 
 
@@ -464,6 +464,37 @@ def set_water(phreatic, joints="sets", unit_weight=9810.0):
                 wet.add((I.id1, I.id2))
     O.tags[_SETS_TAG] = json.dumps(sets)
     return len(wet)
+
+
+_STATIC_GRAVITY_TAG = "yade_rbsm.static_gravity"
+
+
+def set_seismic(kh, kv=0.0, towards=1):
+    """Pseudo-static earthquake load in the block model: gravity becomes g (towards kh, -(1 - kv)) with g the
+    static gravity's magnitude (kept in O.tags the first time, so that set_seismic(0) gives it back): a
+    horizontal acceleration kh g towards *towards* (+1: +x, -1: -x; the face's outward side), and kv g
+    upwards (kv > 0 lightens the blocks), the convention of limit equilibrium's pseudo-static methods (a
+    force kh W at each block's centroid). Strength reduction, fos() and dynamic runs take it (it is the
+    NewtonIntegrator's gravity); settle under it only if it is stable. Returns the gravity set."""
+    from yade import O
+    from . import omega
+    from .checks import number
+    kh = number("set_seismic", "kh", kh, 0, 1)
+    kv = number("set_seismic", "kv", kv, -1, 1, high_open=True)
+    if towards not in (1, -1):
+        raise ValueError("set_seismic: towards must be +1 (+x) or -1 (-x), the side the face looks to (got %r)" % (towards,))
+    newton = omega.newton(O)
+    if _STATIC_GRAVITY_TAG not in O.tags.keys():
+        O.tags[_STATIC_GRAVITY_TAG] = json.dumps(list(newton.gravity))
+    g0 = json.loads(O.tags[_STATIC_GRAVITY_TAG])
+    gm = math.sqrt(sum(c * c for c in g0))
+    if gm == 0:
+        raise ValueError("set_seismic: NewtonIntegrator.gravity is zero: there is no weight to load pseudo-statically")
+    if kh == 0 and kv == 0:
+        newton.gravity = tuple(g0)
+    else:
+        newton.gravity = (towards * kh * gm, -(1 - kv) * gm, 0.0)
+    return tuple(newton.gravity)
 
 
 def unbalanced_ratio(ids=None, gravity=None):

@@ -220,3 +220,13 @@ def test_water_on_the_bedding_of_a_plane_failure():
     assert r["fs"] < 0.93 * 1.4818, r  # the water lowers it (dry: 1.4818)
     e = r["water_errors"]  # (after the strength reduction: refused values leave the water as it was)
     assert len(e) == 3 and "phreatic" in e[0] and "no joint set called 'fault'" in e[1] and "unit_weight" in e[2], e
+
+
+def test_pseudo_static_plane_failure():
+    """jointset_plane.py 0 0.1 (issue 40): a horizontal acceleration 0.1 g out of the face (slope.set_seismic):
+    Hoek & Bray's pseudo-static FS (c A + W (cos psi - kh sin psi) tan phi) / (W (sin psi + kh cos psi)) =
+    1.2138; measured 1.2131. Before set_seismic existed the only way was tilting NewtonIntegrator.gravity by hand."""
+    r = result_of("jointset_plane.py", "0", "0.1")
+    assert r["fs"] == pytest.approx(r["closed"], rel=0.01) and r["closed"] == pytest.approx(1.2138, rel=1e-3), r
+    e = r["seismic_errors"]
+    assert len(e) == 3 and "kh" in e[0] and "towards" in e[1] and "kh" in e[2], e
