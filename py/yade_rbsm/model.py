@@ -6,6 +6,7 @@
     m.settle()            # in-situ stress: gravity to an unbalanced-force ratio of 1e-4
     m.give_joint_sets()   # the joints' own strength, and equilibrium again
     r = m.fos()           # slope.fos(): strength reduction and the estimates beside it
+    m.set_water(line)     # water in the joints (then equilibrium again); m.set_seismic(kh) a pseudo-static load
     m.run(2.0)            # dynamic stage: no damping, the run-out (optionally at strengths / F)
     print(m)              # the stages, what each ran and found
     m.report("out/report.md")
@@ -133,6 +134,24 @@ class SlopeModel:
         n = slope.give_joint_sets(self.sb) if getattr(self.sb, "joint_sets", None) else 0
         self._record("joint strengths", {}, dict(joints_given=n), w0)
         return self.settle(tol=tol, name="equilibrium")
+
+    def set_water(self, phreatic, joints="sets", unit_weight=9810.0, settle=True):
+        """Water in the joints (:func:`slope.set_water`), then equilibrium again (*settle*); recorded."""
+        from . import slope
+        w0 = time.time()
+        wet = slope.set_water(phreatic, joints=joints, unit_weight=unit_weight)
+        self._record("water", dict(phreatic=[list(p) for p in phreatic] if phreatic is not None else None, joints=joints),
+                     dict(joints_wet=wet), w0)
+        return self.settle(name="equilibrium") if settle and phreatic is not None else self.stages[-1]
+
+    def set_seismic(self, kh, kv=0.0, towards=1, settle=True):
+        """The pseudo-static load (:func:`slope.set_seismic`), then equilibrium under it (*settle*: a load
+        applied at once would also shake the slope, twice the static effect on an elastic spring); recorded."""
+        from . import slope
+        w0 = time.time()
+        g = slope.set_seismic(kh, kv=kv, towards=towards)
+        st = self._record("pseudo-static", dict(kh=kh, kv=kv, towards=towards), dict(gravity=list(g)), w0)
+        return self.settle(name="equilibrium") if settle else st
 
     def fos(self, **kw):
         """:func:`slope.fos` on the current state (the scene is left as it was); recorded."""
