@@ -126,7 +126,7 @@ def _scale(ids):
 
 
 def fos(sb=None, kind=None, d_fail=None, max_steps=None, patience=4, tol=1e-4, rtol=0.01, probe=True,
-        circle=None, density_scaling=False, verbose=False):
+        circle=None, density_scaling=False, verbose=False, reference_rotation=0.2):
     """The factor of safety of the current scene (module docstring): a :class:`FosResult` with ``fs``,
     ``warnings`` (empty when conclusive), the other ``estimates`` and ``to_json()``, ``to_markdown()``.
 
@@ -136,7 +136,8 @@ def fos(sb=None, kind=None, d_fail=None, max_steps=None, patience=4, tol=1e-4, r
     crossings of the slope at the current O.dt, 2000 to 50 000), *patience*, *tol*, *rtol*,
     *density_scaling*: strength reduction's. *probe*: also the surface of slipping joints; *circle*: also
     Bishop's critical circle (with *sb*; default: for a continuum only, since for jointed rock the
-    blocks' material is the intact rock's). The scene is left as it was."""
+    blocks' material is the intact rock's). *reference_rotation*: strength reduction's (None: no check of
+    blocks that turned since they were built). The scene is left as it was."""
     from yade import O
     from .strength_reduction import strength_reduction, _free_ids
     w0 = time.time()
@@ -159,7 +160,8 @@ def fos(sb=None, kind=None, d_fail=None, max_steps=None, patience=4, tol=1e-4, r
     settings = dict(d_fail=round(d_fail, 6), max_steps=max_steps, patience=patience, tol=tol, rtol=rtol, check=check,
                     density_scaling=density_scaling, blocks=len(ids), kind_from=why_kind)
     sr = strength_reduction(start=1.0, grow=1.25, rtol=rtol, tol=tol, d_fail=d_fail, max_steps=max_steps, check=check,
-                            damping=0.7, density_scaling=density_scaling, patience=patience, verbose=verbose)
+                            damping=0.7, density_scaling=density_scaling, patience=patience, verbose=verbose,
+                            reference_rotation=reference_rotation)
     warnings = list(sr.warnings)
     estimates = {"strength reduction": dict(fs=sr.fs, note="bracket [%.4f stable, %.4f failed], %d trials%s" % (
         sr.lo, sr.hi, len(sr.trials), (", failing by " + sr.mechanism) if sr.mechanism else ""))}

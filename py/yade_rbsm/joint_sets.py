@@ -27,6 +27,7 @@ Pure Python apart from the compiled cutter; it imports without YADE.
 """
 import math
 import random
+import warnings
 from dataclasses import dataclass, field
 from typing import List, Optional, Sequence, Tuple
 
@@ -62,6 +63,9 @@ class JointStrength:
         self.cohesion = number(who, "cohesion", self.cohesion, 0)
         if self.friction_angle is not None:
             self.friction_angle = number(who, "friction_angle (degrees)", self.friction_angle, 0, 90, high_open=True)
+            if 0 < self.friction_angle < 1.5:  # (YADE's own angles are radians)
+                warnings.warn("%s: friction_angle %g is in degrees here; %g rad would be %.1f deg" % (
+                    who, self.friction_angle, self.friction_angle, math.degrees(self.friction_angle)), stacklevel=3)
         self.tensile_strength = number(who, "tensile_strength", self.tensile_strength, 0)
         for key in ("kn", "ks"):
             if getattr(self, key) is not None:
@@ -98,6 +102,9 @@ class JointSet(JointStrength):
     def __post_init__(self):
         who = "JointSet"
         self.dip = number(who, "dip", self.dip, -360, 360)
+        if 0 < abs(self.dip) < 1.6:  # (YADE's own angles are radians)
+            warnings.warn("%s: dip %g is in degrees here; %g rad would be %.1f deg" % (
+                who, self.dip, self.dip, math.degrees(self.dip)), stacklevel=3)
         self.spacing = number(who, "spacing", self.spacing, 0, low_open=True)
         try:
             ox, oy = self.origin
@@ -144,6 +151,22 @@ class SetCut:
         return "SetCut(%r: %.4g m of joint, %.4g m of trace given inside the outline)" % (self.name, self.length, self.given)
 
 
+def _line_angle(dip):
+    """The dip [deg] as the angle of its line in (-90, 90] (a line dipping 180 is the one dipping 0)."""
+    d = math.fmod(dip, 180.0)
+    return d - 180.0 if d > 90.0 else d + 180.0 if d <= -90.0 else d
+
+
+def _direction(deg):
+    """(cos, sin) of *deg*, exact where it is a multiple of 90 (sin 180 is 1.2e-16 in floating point, and a
+    joint 1e-16 off the horizontal makes slivers of a horizontal ground)."""
+    if deg % 90.0 == 0.0:
+        k = int(round(deg / 90.0)) % 4
+        return [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)][k]
+    a = math.radians(deg)
+    return (math.cos(a), math.sin(a))
+
+
 def set_traces(js, bbox):
     """The traces of the JointSet *js* over the box ``(xmin, ymin, xmax, ymax)``: a list of segments
     ((x0, y0), (x1, y1)), reaching past the box."""
@@ -151,8 +174,8 @@ def set_traces(js, bbox):
     rng = random.Random(js.seed)
     diag = math.hypot(xmax - xmin, ymax - ymin)
     cx, cy = 0.5 * (xmin + xmax), 0.5 * (ymin + ymax)
-    a = math.radians(js.dip)
-    d = (math.cos(a), math.sin(a))
+    a = math.radians(_line_angle(js.dip))
+    d = _direction(_line_angle(js.dip))
     nrm = (-d[1], d[0])
     corners = [(xmin, ymin), (xmax, ymin), (xmax, ymax), (xmin, ymax)]
     off = [(p[0] - js.origin[0]) * nrm[0] + (p[1] - js.origin[1]) * nrm[1] for p in corners]
@@ -172,8 +195,7 @@ def set_traces(js, bbox):
     for s in sorted(set(below[1:] + offsets)):
         if s < lo - js.spacing or s > hi + js.spacing:
             continue
-        dip = a + (math.radians(rng.gauss(0.0, js.dip_spread)) if js.dip_spread else 0.0)
-        u = (math.cos(dip), math.sin(dip))
+        u = _direction(_line_angle(js.dip) + (rng.gauss(0.0, js.dip_spread) if js.dip_spread else 0.0))
         p = (js.origin[0] + s * nrm[0], js.origin[1] + s * nrm[1])  # on this joint's line
         # the line's parameter range over the box: around the box centre's projection, +- the diagonal
         t0 = (cx - p[0]) * u[0] + (cy - p[1]) * u[1]

@@ -117,14 +117,23 @@ class SlopeModel:
     def settle(self, tol=1e-4, max_steps=100000, density_scaling=True, name="in-situ"):
         """Gravity to an unbalanced-force ratio below *tol* (:func:`slope.settle`, damped, with density
         scaling by default: the same equilibrium in fewer steps)."""
-        from . import slope
+        from yade import O, Vector3
+        from . import omega, slope
         w0 = time.time()
+        free = omega.free_bodies(O)
+        before = {b.id: Vector3(b.state.pos) for b in free}  # (a copy: state.pos is the body's own)
         ok, steps, ratio = slope.settle(tol=tol, max_steps=max_steps, check=200, density_scaling=density_scaling)
+        moved = max(((O.bodies[i].state.pos - p).norm() for i, p in before.items()), default=0.0)
+        size = sorted(2 * b.shape.circumradius for b in free)[len(free) // 2] if free else 0.0
         st = self._record(name, dict(tol=tol, density_scaling=density_scaling),
-                          dict(converged=bool(ok), steps=steps, unbalanced=ratio), w0)
+                          dict(converged=bool(ok), steps=steps, unbalanced=ratio, max_displacement=moved), w0)
         if not ok:
             print("SlopeModel.%s: not settled in %d steps (unbalanced-force ratio %.2e > %g): the slope may be failing "
                   "at these strengths" % (name, steps, ratio, tol), flush=True)
+        elif moved > 0.1 * size:
+            print("SlopeModel.%s: WARNING: settled, but a block moved %.3g m on the way (%.0f %% of the median block "
+                  "size): the slope failed at these strengths and came to rest elsewhere" % (name, moved, 100 * moved / size),
+                  flush=True)
         return st
 
     def give_joint_sets(self, tol=1e-4):

@@ -401,8 +401,11 @@ def give_joint_sets(sb):
         src = sc.source
         if not sc.segments:
             continue
-        # the set's traces that kept a joint (its joints' edges for an older SetCut): a few long polylines
+        # the set's traces that kept a joint (its joints' edges for an older SetCut): a few long polylines;
+        # one whose joints the scene does not find is left out (far from the origin, a trace with one
+        # short edge went unfound: set_joint_strength refuses a polyline without a joint)
         polylines = [list(t) for t in getattr(sc, "traces", [])] or [list(e) for e in sc.segments]
+        polylines = [l for l in polylines if joints_on([l])] or polylines
         if src.friction_angle is not None:
             phi = math.radians(src.friction_angle)
         else:
@@ -440,6 +443,8 @@ def set_water(phreatic, joints="sets", unit_weight=9810.0):
     line = monotone("set_water: phreatic", phreatic)  # (every check before any change: a refusal changes nothing)
     unit_weight = number("set_water", "unit_weight", unit_weight, 0)
     sets = joint_sets()
+    if isinstance(joints, str) and joints not in ("sets", "all"):
+        joints = [joints]  # one set's name ("bedding" read as its letters named seven sets)
     names = None if joints in ("sets", "all") else list(joints)
     if names is not None:
         known = {js.get("name") for js in sets}

@@ -76,5 +76,6 @@ except ValueError as e:
     unknown = str(e)
 r = strength_reduction(start=1.0, grow=1.2, rtol=0.005, density_scaling=True, max_steps=8000, check=200, d_fail=0.1,
                        verbose=False)
-print("RESULT " + json.dumps(dict(fs=r.fs, lo=r.lo, hi=r.hi, closed=closed, blocks=len(sb.free), welds=len(sb.welds), given=given, wet=wet, seismic_errors=seismic_errors, water_errors=water_errors, water=water, U=U, V=V, closed_u=closed_no_crack_water, by_name=by_name, unknown=unknown,
+wet_by_name = sl.set_water([(xd, yd), (xc, yc + max(zw, 1.0))], joints="bedding")  # one set, by its name (after)
+print("RESULT " + json.dumps(dict(fs=r.fs, lo=r.lo, hi=r.hi, closed=closed, blocks=len(sb.free), welds=len(sb.welds), given=given, wet=wet, wet_by_name=wet_by_name, seismic_errors=seismic_errors, water_errors=water_errors, water=water, U=U, V=V, closed_u=closed_no_crack_water, by_name=by_name, unknown=unknown,
                                   on=on, tan_rock=math.tan(rock.frictionAngle))))

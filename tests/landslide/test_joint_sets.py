@@ -218,6 +218,7 @@ def test_water_on_the_bedding_of_a_plane_failure():
     assert r["water"]["tension crack"] == pytest.approx(r["V"], rel=0.05), r
     assert r["fs"] == pytest.approx(r["closed_u"], rel=0.01), r
     assert r["fs"] < 0.93 * 1.4818, r  # the water lowers it (dry: 1.4818)
+    assert r["wet_by_name"] == 1, r  # joints="bedding": that set (it was read as seven sets 'b', 'e', 'd', ...)
     e = r["water_errors"]  # (after the strength reduction: refused values leave the water as it was)
     assert len(e) == 3 and "phreatic" in e[0] and "no joint set called 'fault'" in e[1] and "unit_weight" in e[2], e
 

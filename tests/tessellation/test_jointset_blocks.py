@@ -25,8 +25,8 @@ from yade_rbsm.voronoi import _tess  # noqa: E402
 
 # the issue's slope: a 20 m 2:1 rock slope (toe flat, face, crest flat) on a base 10 m below the toe
 SURFACE = [(-10, 0), (10, 0), (20, 20), (40, 20)]
-SET_A = dict(dip=-20, spacing=3, friction_angle=30)  # dips 20 deg out of the face (+x)
-SET_B = dict(dip=110, spacing=4, origin=(1, 0), friction_angle=35, cohesion=1e4)  # 70 deg into it
+SET_A = dict(dip=-20, spacing=3, friction_angle=30)  # dips 20 deg towards +x (this face looks to -x: into it)
+SET_B = dict(dip=110, spacing=4, origin=(1, 0), friction_angle=35, cohesion=1e4)  # = -70: 70 deg towards +x
 BENCH = [(0, 0), (40, 0), (40, 20), (28, 20), (24, 12), (18, 12), (14, 4), (0, 4)]  # a bench: two reflex corners
 OVERHANG = [(0, 0), (30, 0), (30, 14), (18, 14), (12, 10), (16, 6), (10, 2), (0, 2)]  # the face leans out
 
@@ -316,3 +316,23 @@ def test_a_long_thin_strip_is_a_sliver_too():
     merged = check_cut(slope.jointset_blocks(min_width=0.1, **kw), box, traces=[t1, t2])
     assert len(merged.free) == 2 and merged.slivers["merged_area"] == pytest.approx(0.5)
     assert "0.1 m wide" in J.report(merged)
+
+
+@pytest.mark.parametrize("dip", [0, 180, -180, 90, -90, 270])
+def test_level_and_upright_sets_on_a_level_ground(dip):
+    """A new user's trial: dip 180 (the same set as 0) stopped with 'a block is degenerate after rounding'
+    (sin 180 deg is 1.2e-16 in floating point: joints a hair off the level crest). Every multiple of 90 is now
+    exact; 0 and 180 give the same blocks."""
+    bench = [(0, 30), (30, 30), (36.99, 15), (46.99, 15), (53.99, 0), (83.99, 0)]
+    region = slope.slope_polygon(bench, -8)
+    js = slope.JointSet(dip=dip, spacing=4)
+    sb = check_cut(slope.jointset_blocks(bench, base=-8, sets=[js]), region, [js])
+    same = slope.jointset_blocks(bench, base=-8, sets=[slope.JointSet(dip=dip % 180, spacing=4)])
+    assert sorted(map(sorted, (b.vertices for b in sb.free))) == sorted(map(sorted, (b.vertices for b in same.free)))
+
+
+def test_radians_given_for_degrees_are_warned_about():
+    with pytest.warns(UserWarning, match="dip -0.610865 is in degrees here"):
+        slope.JointSet(dip=-math.radians(35), spacing=3)
+    with pytest.warns(UserWarning, match="friction_angle 0.558505 is in degrees"):
+        slope.Trace([(0, 0), (1, 1)], friction_angle=math.radians(32))
