@@ -104,15 +104,20 @@ namespace {
 		bool     carries  = false;
 	};
 
+	// A force f on body 2 at s along the segment: into the resultant and its moment about p0.
+	[[gnu::always_inline]] inline void addForceAt(const JointStep& j, Real s, const Vector2r& f, JointSums& sum)
+	{
+		sum.force += f;
+		sum.momentP0 += s * cross(j.seg, f); // (x_k − p0) × f, x_k − p0 = s_k (p1 − p0)
+	}
+
 	// What a point adds to the sums: its force (springs fn, fs, with the dashpots' share) at s along the
 	// segment, and its law's results r; strength: its Mohr-Coulomb strength times its area.
 	[[gnu::always_inline]] inline void addToSums(const RbsmGeom& g, const JointStep& j, Real s, Real fn, Real fs, const rbsm::JointPointResult& r,
 	                                             bool open, Real strength, JointSums& sum)
 	{
 		sum.carries |= !open;
-		const Vector2r f = fn * g.normal + fs * j.tangent;
-		sum.force += f;
-		sum.momentP0 += s * cross(j.seg, f); // (x_k − p0) × f, x_k − p0 = s_k (p1 − p0)
+		addForceAt(j, s, fn * g.normal + fs * j.tangent, sum);
 		sum.elastic += r.elasticEnergy;
 		sum.dissipated += r.dissipated;
 		sum.released += r.released;
@@ -212,10 +217,9 @@ namespace {
 			const Vector2r x = g.p0 + s * j.seg;
 			const Real     u = gammaW * std::max<Real>(0, phreaticHeight(line, x.x()) - x.y());
 			if (u <= 0) continue;
-			const Vector2r f = u * g.rule->w[k] * j.area * g.normal;
-			sum.force += f;
-			sum.momentP0 += s * cross(j.seg, f);
-			total += u * g.rule->w[k] * j.area;
+			const Real pushed = u * g.rule->w[k] * j.area;
+			addForceAt(j, s, pushed * g.normal, sum);
+			total += pushed;
 		}
 		return total;
 	}
@@ -271,7 +275,8 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	// Open everywhere and clearly apart: the joint is gone. "Clearly": beyond round-off of the
 	// block size, so that two blocks resting edge to edge with zero overlap keep their contact
 	// instead of losing and re-making it every step.
-	// A wet joint stays while the geometry keeps it: the water fills a crack that opens (Hoek & Bray's V).
+	// A wet joint stays while the geometry keeps it (a crack opening within the contact's reach keeps its
+	// water; beyond it the geometry loses the joint and its water goes: Hoek & Bray's V is lost, issue 40).
 	if (!sum.carries && p.waterForce == 0 && g.separation > 1e-9 * (g.h1 + g.h2)) return false;
 
 	const Vector3r f3(sum.force.x(), sum.force.y(), 0);

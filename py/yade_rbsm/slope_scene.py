@@ -209,7 +209,7 @@ def break_joints(polylines, tol=None, counted=None):
 
 
 def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=None, ductile=None, tol=None,
-                       normal_stiffness=None, shear_stiffness=None, name=None):
+                       normal_stiffness=None, shear_stiffness=None, name=None, skip_missing=False):
     """A joint set with its own strength: every joint on the *polylines* (:func:`joints_on`; e.g. a
     bedding plane given to a builder's ``joints=``) gets *cohesion* [Pa], tan(*friction_angle* [rad])
     and *tensile_strength* [Pa] (default: the Mohr-Coulomb apex cohesion / tan(friction_angle); a
@@ -228,6 +228,8 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
     set's strength; strength_reduction does so between the chunks of its trials (without it a wedge
     on a 30 deg set in 40 deg rock, tan 30 / tan 25 = 1.238, stopped at 1.269).
     *name*: the set's name, kept with it (:func:`joints_of` finds its joints by it for the rest of the run).
+    *skip_missing*: leave out a polyline without a joint instead of refusing it (give_joint_sets: a trace
+    whose joints are not found; ValueError still if none has any).
     *friction_angle* in radians: degrees (> pi/2) are refused. Returns the number of joints set (over
     all ranks under yade.mpy, where every rank calls it);
     ValueError if a polyline carries no joint (it misses the blocks' cuts) or a value is out of range."""
@@ -262,6 +264,9 @@ def set_joint_strength(polylines, cohesion, friction_angle, tensile_strength=Non
     counts = [float(len(js)) for js in found]
     if mpi.is_split():  # a rank may hold none of a polyline's joints: the check is the whole scene's
         counts = mpi.allreduce_sum(counts)
+    if skip_missing and any(counts):
+        polylines, found = [l for l, n in zip(polylines, counts) if n], [js for js, n in zip(found, counts) if n]
+        counts = [n for n in counts if n]
     for k, n in enumerate(counts):
         if n == 0:
             raise ValueError("%s: no joint lies on polylines[%d] %s (give the polyline the blocks were cut along, "
@@ -403,9 +408,8 @@ def give_joint_sets(sb):
             continue
         # the set's traces that kept a joint (its joints' edges for an older SetCut): a few long polylines;
         # one whose joints the scene does not find is left out (far from the origin, a trace with one
-        # short edge went unfound: set_joint_strength refuses a polyline without a joint)
+        # short edge went unfound), by set_joint_strength's own search
         polylines = [list(t) for t in getattr(sc, "traces", [])] or [list(e) for e in sc.segments]
-        polylines = [l for l in polylines if joints_on([l])] or polylines
         if src.friction_angle is not None:
             phi = math.radians(src.friction_angle)
         else:
@@ -415,7 +419,7 @@ def give_joint_sets(sb):
                 t = min(mpi.distributed().comm.allgather(t))
             phi = math.atan(t)
         n += set_joint_strength(polylines, src.cohesion, phi, tensile_strength=src.tensile_strength, ductile=src.ductile,
-                                normal_stiffness=src.kn, shear_stiffness=src.ks, name=sc.name)
+                                normal_stiffness=src.kn, shear_stiffness=src.ks, name=sc.name, skip_missing=True)
     return n
 
 

@@ -252,6 +252,7 @@ namespace {
 				Arr::Halfedge_handle he;
 				for (auto g = arr.halfedges_begin(); g != arr.halfedges_end(); ++g)
 					if (g->source()->point() == e.second.source() && g->target()->point() == e.second.target()) he = g;
+				if (he == Arr::Halfedge_handle()) continue; // (not an edge as it stands now: a merge split it)
 				const Arr::Face_handle f = arr.remove_edge(he, false, false);
 				if (convexFace(f)) {
 					pruneDangling(arr); // what is left of the removed joint's trace, if it cuts nothing now
