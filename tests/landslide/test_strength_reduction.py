@@ -114,7 +114,7 @@ def test_trend_tells_a_creeping_mechanism_from_a_slope_still_settling():
 
 
 def test_the_main_example_brackets_by_mechanism_and_equilibrium(tmp_path):
-    """scripts/landslide_slope.py --strength-reduction (issue 37): on 43d2814 its failed end F = 0.8375 'only did
+    """scripts/landslide_slope.py --strength-reduction (issue 37): on e456729 its failed end F = 0.8375 'only did
     not converge within max_steps = 4000' (0.027 m moved, nothing ran away) and the FS was 0.834. Trials still
     undecided at max_steps now run on while their motion dies out: both ends are decided (converged, runaway or
     creeping) and no max_steps warning is left (measured: FS 0.878, bracket [0.875 converged, 0.881 runaway])."""

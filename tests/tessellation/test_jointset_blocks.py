@@ -291,7 +291,7 @@ def test_every_builder_takes_joint_sets_and_traces(builder):
 
 
 def test_an_island_of_joints_is_joined_by_welds_not_dropped():
-    """A closed triangle of joints inside rock, touching nothing: on 05cde65 the cutter removed it (its joints
+    """A closed triangle of joints inside rock, touching nothing: on c194afc the cutter removed it (its joints
     lost); now it is a block, joined to the rest by two horizontal welds from its extreme corners."""
     box = [(0, 0), (10, 0), (10, 10), (0, 10)]
     tri = [(3, 3), (7, 3), (5, 7)]
