@@ -1,4 +1,5 @@
 #include <pkg/rbsm/BoundaryJoint.hpp>
+#include <pkg/rbsm/DeformableState.hpp>
 #include <pkg/rbsm/MixedMaterials.hpp>
 #include <pkg/rbsm/RbsmGeom.hpp>
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
@@ -30,6 +31,7 @@ namespace rbsm_boundary {
 			geom->setIntegrationPoints(nIP);
 			geom->thickness = block.thickness;
 			geom->reducedMass = RbsmGeom::reducedMassOf(s1, s2); // (the block-block joints' formula)
+			geom->strainSides = deformableState(&s1) ? 1 : 0;
 			I->geom           = geom;
 			g                 = geom.get();
 		} else if (!c.touching) {
@@ -57,6 +59,7 @@ namespace rbsm_boundary {
 		g->d1                      = k.d1;
 		g->relativeVelocity        = k.v0;
 		g->relativeAngularVelocity = s2.angVel.z() - s1.angVel.z();
+		if (g->strainSides) g->addStrainMotion(s1, s2);
 		return true;
 	}
 

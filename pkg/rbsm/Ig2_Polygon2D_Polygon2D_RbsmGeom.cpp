@@ -1,4 +1,5 @@
 #include <pkg/rbsm/Ig2_Polygon2D_Polygon2D_RbsmGeom.hpp>
+#include <pkg/rbsm/DeformableState.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
 #include <pkg/rbsm/MixedMaterials.hpp>
 #include <pkg/rbsm/StepReport.hpp>
@@ -184,6 +185,7 @@ RbsmGeom* Ig2_Polygon2D_Polygon2D_RbsmGeom::newGeom(const Pair& pair, const Stat
 	geom->shapeRevision1 = pair.A.revision;
 	geom->shapeRevision2 = pair.B.revision;
 	geom->searchMemory   = memory;
+	geom->strainSides    = (deformableState(&state1) ? 1 : 0) | (deformableState(&state2) ? 2 : 0);
 	I.geom               = geom;
 	return geom.get();
 }
@@ -214,6 +216,7 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		if (o != Outcome::Touching) return o == Outcome::Lost; // a lost joint goes to the law
 	}
 	g->update(c, pose1, state1, state2);
+	if (g->strainSides) g->addStrainMotion(state1, state2);
 	if (std::max(c.d0, c.d1) > deepOverlap * pair.minSize) {
 		// The input is to blame if the contact is made at the first step of the younger block.
 		const auto& bodies  = scene->bodies->body;

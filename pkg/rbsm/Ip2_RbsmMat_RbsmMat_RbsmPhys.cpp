@@ -74,7 +74,9 @@ void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shar
 	const bool bonded = setCohesionNow || setCohesionOnNewContacts;
 
 	const auto plane = m1.planeStrain ? rbsm::PlaneState::PlaneStrain : rbsm::PlaneState::PlaneStress;
-	const auto k     = rbsm::kawaiSpringsTwoMaterials(m1.young, m1.poisson, g->h1, m2.young, m2.poisson, g->h2, plane);
+	// a deformable block carries its own elasticity: its side of the joint adds h/(penalty E′), not h/E′
+	const Real h1 = m1.deformable ? g->h1 / m1.penalty : g->h1, h2 = m2.deformable ? g->h2 / m2.penalty : g->h2;
+	const auto k  = rbsm::kawaiSpringsTwoMaterials(m1.young, m1.poisson, h1, m2.young, m2.poisson, h2, plane);
 
 	auto p             = shared_ptr<RbsmPhys>(new RbsmPhys);
 	p->kn              = rbsm_mixed::givenOr(m1.jointKn, m2.jointKn, k.kn);
@@ -83,7 +85,9 @@ void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shar
 	p->cohesion        = std::min(m1.cohesion, m2.cohesion);
 	p->tensileStrength = std::min(m1.tensileStrength, m2.tensileStrength);
 	p->ductile         = m1.ductile && m2.ductile;
-	p->initPoints(g->nPoints(), bonded && (p->cohesion > 0 || p->tensileStrength > 0));
+	// the as-built joints of a deformable continuum are its cuts, welded; any other joint is a discontinuity
+	p->welded = bonded && m1.deformable && m2.deformable;
+	p->initPoints(g->nPoints(), p->welded || (bonded && (p->cohesion > 0 || p->tensileStrength > 0)));
 	I->phys = p;
 }
 

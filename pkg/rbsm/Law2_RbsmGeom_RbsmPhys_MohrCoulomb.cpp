@@ -1,6 +1,8 @@
 #include <pkg/rbsm/Law2_RbsmGeom_RbsmPhys_MohrCoulomb.hpp>
 #include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
 
+#include <pkg/rbsm/DeformableState.hpp>
+#include <pkg/rbsm/Polygon2D.hpp>
 #include <pkg/rbsm/StepReport.hpp>
 
 #include <algorithm>
@@ -100,6 +102,7 @@ namespace {
 	};
 	struct JointSums {
 		Vector2r force    = Vector2r::Zero();
+		Vector2r firstMoment = Vector2r::Zero(); // Σ s_k f_k: with force, the forces' first moment about any point (strain loads)
 		Real     momentP0 = 0, elastic = 0, dissipated = 0, released = 0, viscous = 0, normalForce = 0, shearForce = 0, strength = 0;
 		bool     carries  = false;
 	};
@@ -109,6 +112,7 @@ namespace {
 	{
 		sum.force += f;
 		sum.momentP0 += s * cross(j.seg, f); // (x_k − p0) × f, x_k − p0 = s_k (p1 − p0)
+		sum.firstMoment += s * f;
 	}
 
 	// What a point adds to the sums: its force (springs fn, fs, with the dashpots' share) at s along the
@@ -225,6 +229,29 @@ namespace {
 	}
 }
 
+// The joint's forces f_k at x_k = p0 + s_k (p1 − p0) load a deformable block's strain by Σ Bᵀ(r_k) f_k,
+// r_k = x_k − c in the block's frame: from their first moment Q = Σ r_k ⊗ f_k = (p0 − c) ⊗ F + (p1 − p0) ⊗ G,
+// G = Σ s_k f_k (on body 2; body 1 takes the opposite forces).
+void Law2_RbsmGeom_RbsmPhys_MohrCoulomb::addStrainLoads(const Interaction& I, const RbsmGeom& g, const Vector2r& force, const Vector2r& firstMoment)
+{
+	const auto& bodies = scene->bodies->body;
+	for (int side = 1; side <= 2; side++) {
+		if (!(g.strainSides & side)) continue;
+		const Body::id_t id = side == 1 ? I.getId1() : I.getId2();
+		DeformableState* ds = deformableState(bodies[id]->state.get());
+		if (!ds) continue;
+		const Vector2r          c = side == 1 ? g.centroid1 : g.centroid2;
+		Eigen::Matrix<Real, 2, 2> Q = (g.p0 - c) * force.transpose() + (g.p1 - g.p0) * firstMoment.transpose();
+		if (side == 1) Q = -Q;
+		Real cs, sn;
+		planarCosSin(ds->ori, cs, sn);
+		Eigen::Matrix<Real, 2, 2> R;
+		R << cs, -sn, sn, cs;
+		const Eigen::Matrix<Real, 2, 2> local = R.transpose() * Q * R; // Σ (Rᵀr) ⊗ (Rᵀf)
+		ds->addStrainLoad(rbsm::strainLoad(local));
+	}
+}
+
 bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
 	RbsmGeom& g = static_cast<RbsmGeom&>(*ig);
@@ -247,13 +274,15 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	p.dampingCoefficient = damped ? dampingRatio * 2 * std::sqrt(p.kn * area * g.reducedMass) / area : 0;
 	JointStep j { rbsm::JointParams { p.kn, p.ks, p.cohesion, p.tanPhi, p.tensileStrength, p.ductile }, area, damped, g.kinematics(), g.tangent(), g.p1 - g.p0,
 		      scene->dt, scene->trackEnergy };
-	if (p.cohesion != 0 || p.tensileStrength != 0) { // cohesionless joints have no bond to scale
+	if (p.welded) // a cut of a continuum: elastic, unlimited (the strengths are not used)
+		j.params.cohesion = j.params.tensileStrength = std::numeric_limits<Real>::infinity();
+	else if (p.cohesion != 0 || p.tensileStrength != 0) { // cohesionless joints have no bond to scale
 		const Real bonded = bondedFraction(p, g, j.kin, j.tangent, scene->dt);
 		j.params.cohesion *= bonded;
 		j.params.tensileStrength *= bonded;
 	}
 	// frictional: no bond left (or none to begin with): the joint slips as a whole
-	const bool frictional = (p.cohesion == 0 && p.tensileStrength == 0) || p.nIntact() == 0;
+	const bool frictional = !p.welded && ((p.cohesion == 0 && p.tensileStrength == 0) || p.nIntact() == 0);
 	JointSums  sum;
 	sum.released = spreadShearOverGrowth(p, g, n, scene->trackEnergy);
 	if (frictional) {
@@ -279,6 +308,7 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	// water; beyond it the geometry loses the joint and its water goes: Hoek & Bray's V is lost, issue 40).
 	if (!sum.carries && p.waterForce == 0 && g.separation > 1e-9 * (g.h1 + g.h2)) return false;
 
+	if (g.strainSides) addStrainLoads(*I, g, sum.force, sum.firstMoment);
 	const Vector3r f3(sum.force.x(), sum.force.y(), 0);
 	scene->forces.addForce(I->getId1(), -f3);
 	scene->forces.addForce(I->getId2(), f3);

@@ -9,6 +9,8 @@ namespace yade {
 class Law2_RbsmGeom_RbsmPhys_MohrCoulomb : public LawFunctor {
 public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
+	//! The joint's load on the strain of its deformable blocks (RbsmGeom.strainSides), from its force on body 2 and Σ s_k f_k.
+	void addStrainLoads(const Interaction& I, const RbsmGeom& g, const Vector2r& force, const Vector2r& firstMoment);
 	//! Checks the attributes when they are set (raises ValueError in Python, before any step).
 	void postLoad(Law2_RbsmGeom_RbsmPhys_MohrCoulomb&)
 	{

@@ -1,4 +1,6 @@
 #include <pkg/rbsm/RbsmGeom.hpp>
+#include <pkg/rbsm/DeformableState.hpp>
+#include <pkg/rbsm/Polygon2D.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 
@@ -29,6 +31,24 @@ void RbsmGeom::postLoad(RbsmGeom&)
 	holdFrozen(rbsm::unpackFrozen(frozenState));
 	if (nIP > 0) setIntegrationPoints(nIP); // throws for a file with nIP outside 1..8
 	else rule = nullptr;
+}
+
+void RbsmGeom::addStrainMotion(const State& state1, const State& state2)
+{
+	strainSlope.setZero();
+	for (int side = 1; side <= 2; side++) {
+		const DeformableState* ds = (strainSides & side) ? deformableState(side == 1 ? &state1 : &state2) : nullptr;
+		if (!ds) continue;
+		const rbsm::Pose2 pose = planarPose(ds->pos, ds->ori);
+		// the displacement (or velocity) of the strain e at the world point x: R B(Rᵀ(x − c)) e
+		auto       field = [&](const Vector2r& x, const Vector3r& e) { return pose.rotate(rbsm::strainDisplacement(pose.applyInverse(x), e)); };
+		const Real sign  = side == 2 ? 1 : -1; // block 2's motion relative to block 1's
+		d0 -= sign * normal.dot(field(p0, ds->strain));
+		d1 -= sign * normal.dot(field(p1, ds->strain));
+		const Vector2r v0 = field(p0, ds->strainRate);
+		relativeVelocity += sign * v0;
+		strainSlope += sign * (field(p1, ds->strainRate) - v0);
+	}
 }
 
 Vector2r RbsmGeom::point(int k) const

@@ -56,7 +56,8 @@ public:
 		((int, incEdge, -1, Attr::readonly, "Index of the incident edge (the other block's edge that faces the reference edge, vertex i → i+1) at the last exact update; -1 if unknown."))
 		((int, nIP, 0, Attr::readonly, "Number of integration points along the contact (Gauss-Legendre rule of :yref:`positions<RbsmGeom.positions>` and :yref:`weights<RbsmGeom.weights>`), from :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.nIP` when the contact was made."))
 		((int, frozenSteps, 0, Attr::readonly, "Steps since the contact geometry was last computed exactly (0: exact at this step). Above 0 only with :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance` > 0, while the joint is followed as material points."))
-		((bool, lost, false, (Attr::readonly | Attr::noSave), "The blocks of this joint no longer face each other within reach (the facing edge clipped away, or separated beyond what intact springs can hold): the law breaks every point and removes the joint.")),
+		((bool, lost, false, (Attr::readonly | Attr::noSave), "The blocks of this joint no longer face each other within reach (the facing edge clipped away, or separated beyond what intact springs can hold): the law breaks every point and removes the joint."))
+		((int, strainSides, 0, Attr::readonly, "Which blocks of the joint are deformable (:yref:`DeformableState`): 1 block 1, 2 block 2, 3 both, 0 none; read when the joint is made (and by :yref:`BlockStrainIntegrator` when deformable blocks appear). Their strain's displacement is in deltaN and the velocities, and the joint's tractions load it.")),
 		/*ctor*/ createIndex();,
 		/*py*/ .def("point", &RbsmGeom::point, "World position of integration point k [m].")
 		.add_property("contactPoint", &RbsmGeom::contactPoint, "Middle of the contact segment, (p0 + p1)/2 at z = 0 [m]: the contact point of YADE's sphere contacts (ScGeom.contactPoint), so that YADE's tools reading it (export.VTKExporter.exportContactPoints) work on joints.")
@@ -84,10 +85,17 @@ public:
 	/// The relative motion along the segment, for the law to sample at its points.
 	rbsm::SegmentKinematics kinematics() const
 	{
-		const Vector2r seg = p1 - p0;
-		return rbsm::SegmentKinematics { d0, d1, relativeVelocity, relativeAngularVelocity * Vector2r(-seg.y(), seg.x()) };
+		const Vector2r          seg = p1 - p0;
+		rbsm::SegmentKinematics k { d0, d1, relativeVelocity, relativeAngularVelocity * Vector2r(-seg.y(), seg.x()) };
+		if (strainSides) k.dvds += strainSlope; // (deformable blocks only: a rigid joint's sum is untouched)
+		return k;
 	}
 	Vector2r point(int k) const;
+	/// Deformable blocks (strainSides): their strain's displacement B(r)ε, and its rate, added to the overlap
+	/// at the segment's ends and to the relative velocity along it (linear in s, as the rigid motion's).
+	void addStrainMotion(const State& state1, const State& state2);
+	/// The strain rates' part of the change of the relative velocity from p0 to p1 [m/s] (addStrainMotion).
+	Vector2r strainSlope = Vector2r::Zero();
 	/// The step's contact c (rbsm::EdgeContact, in block 1's frame frame1, exact or frozen) written to
 	/// the world frame, with the centroids, Kawai's h1 and h2 and the relative motion along the segment
 	/// (the fields kinematics() reads back for the law); the joint is not lost.

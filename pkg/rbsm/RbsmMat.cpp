@@ -1,4 +1,5 @@
 #include <pkg/rbsm/RbsmMat.hpp>
+#include <pkg/rbsm/DeformableState.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
 
 #include <cmath>
@@ -40,6 +41,11 @@ void RbsmMat::postLoad(RbsmMat& m)
 	require(std::isfinite(m.tensileStrength) && m.tensileStrength >= 0, m, "tensileStrength", m.tensileStrength, "must be a finite number >= 0");
 	require(std::isfinite(m.jointKn) && m.jointKn >= 0, m, "jointKn", m.jointKn, "must be a finite number >= 0 (0: Kawai's stiffness)");
 	require(std::isfinite(m.jointKs) && m.jointKs >= 0, m, "jointKs", m.jointKs, "must be a finite number >= 0 (0: Kawai's stiffness)");
+	require(std::isfinite(m.penalty) && m.penalty >= 1, m, "penalty", m.penalty, "must be a finite number >= 1 (a multiple of Kawai's joint stiffness)");
 }
+
+shared_ptr<State> RbsmMat::newAssocState() const { return deformable ? shared_ptr<State>(new DeformableState) : Material::newAssocState(); }
+
+bool RbsmMat::stateTypeOk(State* s) const { return !deformable || dynamic_cast<DeformableState*>(s) != nullptr; }
 
 } // namespace yade

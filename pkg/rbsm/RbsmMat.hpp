@@ -30,7 +30,18 @@ public:
 			"Normal stiffness per unit area of the joints of these blocks [Pa/m], as rock engineers give a joint set's kn; 0 (default): Kawai's E′/(h1+h2) from young and poisson. "
 			"Between two materials that both give it, the smaller; if only one does, its value. Also used for joints with walls and facets, and by RbsmTimeStepper's first-contact bound."))
 		((Real, jointKs, 0, Attr::triggerPostLoad,
-			"Shear stiffness per unit area of the joints of these blocks [Pa/m]; 0 (default): Kawai's 2G/(h1+h2). Combined as jointKn.")),
+			"Shear stiffness per unit area of the joints of these blocks [Pa/m]; 0 (default): Kawai's 2G/(h1+h2). Combined as jointKn."))
+		((bool, deformable, false, ,
+			"Blocks of this material carry a constant strain besides their rigid motion (the seed's eq. 4; :yref:`DeformableState`): their "
+			"elasticity is the block's own (young, poisson, planeStrain), so the joints of two such blocks made at the first step of an "
+			"assembly (:yref:`Ip2_RbsmMat_RbsmMat_RbsmPhys.setCohesionNow`, as the builders do) are *welded* (:yref:`RbsmPhys.welded`: stiff "
+			"elastic springs that neither slip nor break, the cuts of a continuum), while joints made later, broken ones and the builders' "
+			"joint sets and traces keep the Mohr-Coulomb law. Rigid blocks (False, default) are Kawai's. Read when a block is built "
+			"(newAssocState) and when a joint is made; needs :yref:`BlockStrainIntegrator` in O.engines (yade_rbsm.engines() has it)."))
+		((Real, penalty, 100, Attr::triggerPostLoad,
+			"Deformable blocks: the stiffness of their joints' springs as a multiple of Kawai's (≥ 1): Kawai's h/E′ is the compliance "
+			"of a rigid block's half, which a deformable block carries in itself, so its side of a joint adds h/(penalty·E′). Larger is "
+			"closer to a continuum across welded joints (a Voronoi plate is softer than the material by about 1/penalty: −9 %, −3.2 %, −0.9 % at 10, 30, 100, tests/deformable/test_patch.py) and costs √penalty in time step.")),
 		/*ctor*/ createIndex(); density = 2600;,
 		/*py*/ .add_property("density", boost::python::make_getter(&Material::density, boost::python::return_value_policy<boost::python::return_by_value>()),
 			&detail::setThenPostLoad<RbsmMat, Material, Real, &Material::density>,
@@ -38,6 +49,9 @@ public:
 	);
 	// clang-format on
 	REGISTER_CLASS_INDEX(RbsmMat, Material);
+	//! A deformable material's blocks get a DeformableState (YADE's utils and the plugin's builders ask the material).
+	shared_ptr<State> newAssocState() const override;
+	bool              stateTypeOk(State* s) const override;
 };
 REGISTER_SERIALIZABLE(RbsmMat);
 

@@ -72,6 +72,7 @@ public:
 	//! Breaks the joint at every integration point (no cohesion, no tension): a pre-existing crack.
 	void breakJoint()
 	{
+		welded = false;
 		for (int k = 0; k < nPoints; k++)
 			point(k).joint.intact = false;
 	}
@@ -120,6 +121,7 @@ public:
 		((Real, tanPhi, 0, , "tan φ of the joint friction angle; finite, >= 0."))
 		((Real, tensileStrength, 0, , "Tensile strength σt of the joint while intact [Pa]; finite, >= 0."))
 		((bool, ductile, false, , "Slip keeps the cohesion (perfectly plastic); only tension breaks the joint (:yref:`RbsmMat.ductile`)."))
+		((bool, welded, false, , "The joint is a cut of a continuum between two deformable blocks (:yref:`RbsmMat.deformable`), not a discontinuity: its springs are elastic penalty springs that neither slip nor break (tension and shear unlimited; the strengths above are not used). Made so by Ip2 for the joints of deformable blocks bonded at the first step (setCohesionNow); breakJoint, and yade_rbsm.slope.set_joint_strength along a joint, make it a Mohr-Coulomb joint."))
 		((bool, water, false, , "The joint takes the pore pressure of the law's phreatic surface (:yref:`Law2_RbsmGeom_RbsmPhys_MohrCoulomb.phreatic`; yade_rbsm.slope.set_water sets it on the joint sets' joints)."))
 		((Real, waterForce, 0, Attr::readonly, "Force of the water in the joint at the last step, Σ u_k a_k [N] (pushing its blocks apart)."))
 		((Real, dampingCoefficient, 0, Attr::readonly, "Viscous traction per relative velocity [Pa·s/m] (from the law's dampingRatio; saved, so that RbsmTimeStepper.estimate() of a loaded scene is right before its first step)."))
@@ -149,7 +151,7 @@ public:
 		.add_property("nIntact", &RbsmPhys::nIntact, "Number of intact integration points.")
 		.add_property("nSlipping", &RbsmPhys::nSlipping, "Number of slipping integration points.")
 		.add_property("nOpen", &RbsmPhys::nOpen, "Number of open integration points.")
-		.def("breakJoint", &RbsmPhys::breakJoint, "Break the joint at all integration points (cohesion and tensile strength lost), e.g. a pre-existing crack.")
+		.def("breakJoint", &RbsmPhys::breakJoint, "Break the joint at all integration points (cohesion and tensile strength lost; a welded joint becomes a Mohr-Coulomb one), e.g. a pre-existing crack.")
 	);
 	// clang-format on
 	REGISTER_CLASS_INDEX(RbsmPhys, IPhys);

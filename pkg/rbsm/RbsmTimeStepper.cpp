@@ -1,5 +1,6 @@
 #include <core/Omega.hpp>
 #include <pkg/rbsm/BlockStateCheck.hpp>
+#include <pkg/rbsm/DeformableState.hpp>
 #include <pkg/rbsm/Ip2_RbsmMat_RbsmMat_RbsmPhys.hpp>
 #include <pkg/rbsm/MemoryOrder.hpp>
 #include <pkg/rbsm/Polygon2D.hpp>
@@ -7,6 +8,7 @@
 #include <pkg/rbsm/RbsmMat.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
 #include <pkg/rbsm/RbsmTimeStepper.hpp>
+#include <pkg/rbsm/NewtonAttribute.hpp>
 #include <pkg/rbsm/ReshapedBlocks.hpp>
 #include <pkg/rbsm/StepReport.hpp>
 #include <pkg/rbsm/kernel/KawaiSprings.hpp>
@@ -42,10 +44,29 @@ namespace {
 	// unfixed with no mass or inertia (utils.wall/facet give none): as in RbsmGeom::reducedMassOf it
 	// counts as infinite mass, and a missing polar inertia as a rotation that the joint cannot drive,
 	// instead of a division by zero (the kernel refuses a free body without mass).
+	// A deformable block's strain degrees of freedom: its (θ, ε) mass and own stiffness A t D, in its frame.
+	void addStrainModes(const Body& b, const Polygon2D& poly, rbsm::DynBody& d)
+	{
+		DeformableState* ds  = deformableState(b.state.get());
+		const auto*      mat = dynamic_cast<const RbsmMat*>(b.material.get());
+		if (!ds || !mat) return;
+		const rbsm::StrainMass& M = ds->strainMass(poly);
+		d.deformable              = true;
+		planarCosSin(ds->ori, d.cosAngle, d.sinAngle);
+		d.inertia         = M.polar;
+		d.thetaStrainMass = M.thetaStrain;
+		d.strainMass      = M.strain;
+		d.strainStiffness = poly.area * poly.thickness * rbsm::elasticityMatrix(mat->young, mat->poisson, mat->planeStrain);
+	}
+
 	rbsm::DynBody dynBody(const Body& b)
 	{
 		const State& s = *b.state;
-		if (polygonOf(b)) return dynBody(s);
+		if (const Polygon2D* poly = polygonOf(b)) {
+			rbsm::DynBody d = dynBody(s);
+			if (DeformableState::alive.load(std::memory_order_relaxed) > 0 && !d.fixed) addStrainModes(b, *poly, d); // (rigid scenes: no cast)
+			return d;
+		}
 		rbsm::DynBody d = dynBody(s);
 		if (!(s.mass > 0)) d.fixed = true;
 		if (!(s.inertia.z() > 0)) d.inertia = std::numeric_limits<Real>::infinity();
@@ -67,25 +88,6 @@ namespace {
 	Vector2r worldVertex(const Polygon2D& poly, const State& s, int i)
 	{
 		return planarPose(s.pos, s.ori).apply(poly.vertices[size_t(i)]);
-	}
-
-	// An attribute of NewtonIntegrator, read through its Python attributes (the plugin does not declare
-	// YADE's integrator), under Python's lock; `fallback` without an integrator or such a value.
-	template <class T> T newtonAttribute(const Scene& scene, const char* name, const T& fallback)
-	{
-		for (const auto& e : scene.engines) {
-			if (!e || e->getClassName() != "NewtonIntegrator") continue;
-			const PyGILState_STATE gil   = PyGILState_Ensure();
-			T                      value = fallback;
-			try {
-				value = boost::python::extract<T>(e->pyDict()[name]);
-			} catch (const boost::python::error_already_set&) {
-				PyErr_Clear();
-			}
-			PyGILState_Release(gil);
-			return value;
-		}
-		return fallback;
 	}
 
 	std::atomic<int> motionReports { 0 };
@@ -401,6 +403,7 @@ Real RbsmTimeStepper::firstContactEstimate()
 void RbsmTimeStepper::fullCheck()
 {
 	lastCheck = scene->iter;
+	if (DeformableState::alive.load(std::memory_order_relaxed) > 0) requireStrainIntegrator();
 	inradius.assign(scene->bodies->body.size(), 0);
 	for (const auto& b : scene->bodies->body)
 		if (b)
@@ -576,6 +579,18 @@ void RbsmTimeStepper::reportMotion(const Body& b, Real motion, Real r)
 	if (!poly || !ownedHere(b)) return;
 	if (b.bound) keepBoundAhead(b, *poly, runCollider);
 	if (maxStepMotion > 0 && !fixedBlock(*b.state)) checkMotion(b, *poly, travelDt);
+}
+
+// Deformable blocks whose strain nobody integrates would be rigid blocks with soft joints: refused, not run.
+void RbsmTimeStepper::requireStrainIntegrator()
+{
+	for (const auto& e : scene->engines)
+		if (e && e->getClassName() == "BlockStrainIntegrator") return;
+	for (const auto& b : scene->bodies->body)
+		if (b && deformableState(b->state.get()))
+			throw std::runtime_error("RbsmTimeStepper: body #" + std::to_string(b->id)
+			                         + " is a deformable block (DeformableState) but O.engines has no BlockStrainIntegrator to integrate its strain: "
+			                           "put one right before NewtonIntegrator (yade_rbsm.engines() does).");
 }
 
 Real RbsmTimeStepper::stableDt() const

@@ -105,6 +105,7 @@ public:
 
 private:
 	void fullCheck();
+	void requireStrainIntegrator();
 	void addJointsMadeThisStep();
 	inline void watchBody(const Body& b, Real& travelDt, bool& runCollider); // keepBoundAhead and checkMotion of one block
 	void        takeScriptDt(); // an O.dt set from outside since this engine set it: setDt off

@@ -78,6 +78,8 @@ def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=F
     if color is not None:
         shape.color = color
     b = wrapper.Body()
+    if mat.deformable:
+        b.state = mat.newAssocState()  # a DeformableState: the block's strain (rigid blocks keep YADE's State)
     b.shape = shape
     b.material = mat
     b.state.pos = (cx, cy, 0)

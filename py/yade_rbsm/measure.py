@@ -142,12 +142,19 @@ def _matrix3(m, scale):
 
 def block_stresses(O=None, table=None):
     """{body id: Matrix3} average stress of every Polygon2D block [Pa], σ[i][j] = (1/V) Σ f_i x_j
-    (symmetric in equilibrium); the RBSM counterpart of YADE's ``bodyStressTensors()``. *table*: a
-    :func:`joint_table` of the same state, if the caller has one."""
+    (symmetric in equilibrium); the RBSM counterpart of YADE's ``bodyStressTensors()``. A deformable
+    block (DeformableState) gives its own stress D·ε instead (DeformableState.stress, the same at rest:
+    its strain equation is V σ = sym Σ x ⊗ f). *table*: a :func:`joint_table` of the same state, if the
+    caller has one."""
+    from yade import Matrix3
     O = _O(O)
     M = _moments(O, table)
     out = {}
     for b in _blocks(O):
+        s = getattr(b.state, "stress", None)
+        if s is not None:
+            out[b.id] = Matrix3(s[0], s[2], 0, s[2], s[1], 0, 0, 0, 0)
+            continue
         v = b.shape.area * b.shape.thickness
         out[b.id] = _matrix3(M[b.id], 1.0 / v)
     return out

@@ -17,6 +17,7 @@ def mixed_engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2
              Law2_ScGeom_FrictPhys_CundallStrack(sphericalBodies=False)])   # spheres (true torques on blocks)
         RbsmTimeStepper
         RbsmPairCheck                 # blocks next to shapes no functor handles (a Box): reported, run stopped
+        BlockStrainIntegrator         # strain of deformable blocks (nothing without them)
         NewtonIntegrator(gravity, damping)   # last, as in YADE's scripts
 
     The arguments are engines()'s. The time stepper counts the block joints only (also those on walls and
@@ -58,5 +59,6 @@ def mixed_engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2
         wrapper.RbsmTimeStepper(safetyFactor=safety, setDt=True, maxDt=O.dt if spheres else float("inf"), interval=interval,
                                 label="timeStepper"),
         wrapper.RbsmPairCheck(label="pairCheck"),
+        wrapper.BlockStrainIntegrator(label="strainIntegrator"),
         wrapper.NewtonIntegrator(gravity=gravity, damping=damping, label="newton"),  # last, as in YADE's scripts
     ]

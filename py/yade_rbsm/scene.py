@@ -17,6 +17,7 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
                         [Law2_RbsmGeom_RbsmPhys_MohrCoulomb])    # tractions, Mohr-Coulomb, tension cut-off
         RbsmTimeStepper                                          # stability limit of the explicit step
         RbsmPairCheck                                            # no silent pass-through
+        BlockStrainIntegrator                                    # strain of deformable blocks (RbsmMat.deformable)
         NewtonIntegrator(gravity, damping)                       # central differences, last (label newton)
 
     *damping* is NewtonIntegrator's non-viscous (Cundall) damping, for quasi-static stages;
@@ -40,7 +41,8 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     step; otherwise the sums follow the container's order and the runs differ by round-off, which
     a chaotic or slipping scene amplifies.
     Labels: collider, ig2, ip2, law, timeStepper, pairCheck (RbsmPairCheck: reports blocks next to shapes that
-    no functor handles), rbsmMpiSync, and newton: NewtonIntegrator is last, YADE's habit (``O.engines[-1].damping``,
+    no functor handles), rbsmMpiSync, strainIntegrator (BlockStrainIntegrator: returns at once without deformable
+    blocks), and newton: NewtonIntegrator is last, YADE's habit (``O.engines[-1].damping``,
     engines appended after it see the step's positions). A Polygon2D body without RbsmMat in O.bodies raises ValueError.
     Periodic cells (O.periodic) are not supported: ValueError.
     """
@@ -99,6 +101,7 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
         stepper,
     ] + sync + [
         wrapper.RbsmPairCheck(label="pairCheck"),  # blocks next to shapes no functor handles: reported, run stopped
+        wrapper.BlockStrainIntegrator(label="strainIntegrator"),  # deformable blocks' strain (nothing without them)
         wrapper.NewtonIntegrator(gravity=gravity, damping=damping, label="newton"),  # last, as in YADE's scripts
     ]
 

@@ -341,6 +341,9 @@ def _give(js, joints, F=1.0, reduce_tensile=False):
             ph.ductile = bool(js["ductile"])
         if js.get("water") and not ph.water:  # a contact made along a wet set takes the water
             ph.water = True
+        if ph.welded:  # a joint of the set is a discontinuity, not a cut of a deformable continuum
+            ph.welded = False
+            changed = True
         n += changed
     return n
 

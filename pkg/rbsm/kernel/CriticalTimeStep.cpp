@@ -11,8 +11,6 @@
 namespace rbsm {
 
 namespace {
-	using Mat3 = Eigen::Matrix3d;
-
 	void checkContact(const std::vector<DynBody>& bodies, const DynContact& c)
 	{
 		if (c.body1 < 0 || c.body2 < 0 || c.body1 >= int(bodies.size()) || c.body2 >= int(bodies.size()) || c.body1 == c.body2)
@@ -62,12 +60,220 @@ namespace {
 		return std::max(Real(0), es.eigenvalues().maxCoeff());
 	}
 	Eigen::Vector3d inverseSqrtMass(const DynBody& b) { return Eigen::Vector3d(1 / std::sqrt(b.mass), 1 / std::sqrt(b.mass), 1 / std::sqrt(b.inertia)); }
+
+	// All contacts between the same pair of bodies summed first: contacts sorted by their pair.
+	// offOfContact[ci]: contact ci's (lower id, higher id) coupling block. Returns (i<j) -> K_ij.
+	template <class Block>
+	std::vector<std::pair<std::pair<int, int>, Block>> sumByPair(const std::vector<DynContact>& contacts, const std::vector<Block>& offOfContact)
+	{
+		auto pairKey = [&](size_t ci) {
+			const DynContact& c = contacts[ci];
+			return (uint64_t(std::min(c.body1, c.body2)) << 32) | uint64_t(std::max(c.body1, c.body2));
+		};
+		std::vector<size_t> order(contacts.size());
+		for (size_t ci = 0; ci < order.size(); ++ci) order[ci] = ci;
+		std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return pairKey(a) < pairKey(b); });
+		std::vector<std::pair<std::pair<int, int>, Block>> off;
+		off.reserve(order.size());
+		for (size_t k = 0; k < order.size(); ++k) {
+			const uint64_t key = pairKey(order[k]);
+			if (k > 0 && key == pairKey(order[k - 1])) off.back().second += offOfContact[order[k]];
+			else off.push_back({ { int(key >> 32), int(key & 0xffffffffu) }, offOfContact[order[k]] });
+		}
+		return off;
+	}
+
+	// The result of the block Gershgorin bound from each free body's row bound and its diagonal part.
+	Real gershgorinResult(
+	        const std::vector<DynBody>& bodies, const std::vector<Real>& bound, const std::vector<Real>& diagBound, std::vector<Real>* perBody, std::vector<Real>* perBodyDiag)
+	{
+		const size_t n    = bodies.size();
+		Real         lmax = 0;
+		for (size_t b = 0; b < n; ++b)
+			if (!bodies[b].fixed) lmax = std::max(lmax, bound[b]);
+		if (perBodyDiag) perBodyDiag->assign(diagBound.begin(), diagBound.end());
+		if (perBody) {
+			perBody->assign(n, 0);
+			for (size_t b = 0; b < n; ++b)
+				if (!bodies[b].fixed) (*perBody)[b] = bound[b];
+		}
+		return lmax > 0 ? 2 / std::sqrt(lmax) : std::numeric_limits<Real>::infinity();
+	}
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+// The 6-DOF path, taken only when some free body is deformable. Blocks have 3 rows (rigid) or 6
+// (deformable); matrices of at most 6x6 on the stack.
+namespace {
+	using BlockMat = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+	using BlockVec = Eigen::Matrix<Real, Eigen::Dynamic, 1, 0, 6, 1>;
+	using Mat6     = Eigen::Matrix<Real, 6, 6>;
+
+	int  dofs(const DynBody& b) { return b.deformable ? 6 : 3; }
+	bool freeDeformable(const DynBody& b) { return b.deformable && !b.fixed; }
+	bool anyFreeDeformable(const std::vector<DynBody>& bodies)
+	{
+		return std::any_of(bodies.begin(), bodies.end(), freeDeformable);
+	}
+
+	Mat4 thetaStrainMass(const DynBody& b)
+	{
+		Mat4 M;
+		M << b.inertia, b.thetaStrainMass.transpose(), b.thetaStrainMass, b.strainMass;
+		return M;
+	}
+
+	// W_b = L_b^-1 with M_b = L_b L_b^T: S_bc = W_b K_bc W_c^T is similar to M^-1 K, blockwise.
+	BlockMat inverseMassFactor(const DynBody& b)
+	{
+		BlockMat W = BlockMat::Zero(dofs(b), dofs(b));
+		W(0, 0) = W(1, 1) = 1 / std::sqrt(b.mass);
+		if (!b.deformable) {
+			W(2, 2) = 1 / std::sqrt(b.inertia);
+			return W;
+		}
+		const Mat4             M4 = thetaStrainMass(b);
+		const Eigen::LLT<Mat4> llt(M4);
+		if (!M4.allFinite() || llt.info() != Eigen::Success)
+			throw std::invalid_argument("criticalTimeStep: a free deformable body needs a positive definite (theta, strain) mass");
+		W.bottomRightCorner(4, 4) = llt.matrixL().solve(Mat4::Identity());
+		return W;
+	}
+
+	// The coefficients of body b's DOFs in the displacement of its material point at x along d:
+	// (d, r x d) and, if deformable, B(R^T r)^T R^T d (the strain in the body's frame).
+	BlockVec pointRow(const DynBody& b, const Vec2& x, const Vec2& d)
+	{
+		const Vec2 r = x - b.centroid;
+		BlockVec   row(dofs(b));
+		row.head<3>() << d.x(), d.y(), cross2(r, d);
+		if (b.deformable) {
+			const Real c = b.cosAngle, s = b.sinAngle;
+			const Vec2 rl(c * r.x() + s * r.y(), -s * r.x() + c * r.y()), dl(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
+			row.tail<3>() << rl.x() * dl.x(), rl.y() * dl.y(), 0.5 * (rl.y() * dl.x() + rl.x() * dl.y());
+		}
+		return row;
+	}
+
+	struct BlockContact {
+		BlockMat K11, K22, K12;
+	};
+	BlockContact blockContactStiffness(const std::vector<DynBody>& bodies, const DynContact& c)
+	{
+		const DynBody &p = bodies[c.body1], &q = bodies[c.body2];
+		BlockContact   K { BlockMat::Zero(dofs(p), dofs(p)), BlockMat::Zero(dofs(q), dofs(q)), BlockMat::Zero(dofs(p), dofs(q)) };
+		for (size_t k = 0; k < c.points.size(); ++k)
+			for (int dir = 0; dir < 2; ++dir) {
+				const Vec2&    d  = dir == 0 ? c.normal : c.tangent;
+				const Real     kk = (dir == 0 ? c.kn : c.ks) * c.areas[k];
+				const BlockVec b1 = -pointRow(p, c.points[k], d), b2 = pointRow(q, c.points[k], d);
+				K.K11.noalias() += (kk * b1) * b1.transpose();
+				K.K22.noalias() += (kk * b2) * b2.transpose();
+				K.K12.noalias() += (kk * b1) * b2.transpose();
+			}
+		return K;
+	}
+
+	Real lambdaMaxBlock(const BlockMat& S)
+	{
+		if (S.rows() == 3) return lambdaMax(Mat3(S));
+		const Eigen::SelfAdjointEigenSolver<Mat6> es(Mat6(S), Eigen::EigenvaluesOnly);
+		return std::max(Real(0), es.eigenvalues().maxCoeff());
+	}
+	// ||S||_2 from the smaller of the two Gram matrices
+	Real normBlock(const BlockMat& S)
+	{
+		return std::sqrt(S.cols() <= S.rows() ? lambdaMaxBlock(S.transpose() * S) : lambdaMaxBlock(S * S.transpose()));
+	}
+
+	void rowBoundsBlocks(const std::vector<DynBody>& bodies, const DynContact& c, Real& add1, Real& add2, Real* diag1, Real* diag2)
+	{
+		const DynBody &    b1 = bodies[c.body1], &b2 = bodies[c.body2];
+		const BlockContact K  = blockContactStiffness(bodies, c);
+		const BlockMat     W1 = b1.fixed ? BlockMat() : inverseMassFactor(b1), W2 = b2.fixed ? BlockMat() : inverseMassFactor(b2);
+		add1 = b1.fixed ? 0 : lambdaMaxBlock(W1 * K.K11 * W1.transpose());
+		add2 = b2.fixed ? 0 : lambdaMaxBlock(W2 * K.K22 * W2.transpose());
+		if (diag1) *diag1 = add1;
+		if (diag2) *diag2 = add2;
+		if (!b1.fixed && !b2.fixed) {
+			const Real norm = normBlock(W1 * K.K12 * W2.transpose());
+			add1 += norm, add2 += norm;
+		}
+	}
+
+	Real gershgorinBlocks(
+	        const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts, std::vector<Real>* perBody, std::vector<Real>* perBodyDiag)
+	{
+		const size_t          n = bodies.size();
+		std::vector<BlockMat> W(n), diag(n);
+		for (size_t b = 0; b < n; ++b) {
+			diag[b] = BlockMat::Zero(dofs(bodies[b]), dofs(bodies[b]));
+			if (bodies[b].fixed) continue;
+			W[b] = inverseMassFactor(bodies[b]);
+			if (bodies[b].deformable) diag[b].bottomRightCorner(3, 3) += bodies[b].strainStiffness; // its own K_ee
+		}
+		std::vector<BlockMat> offOfContact(contacts.size());
+		for (size_t ci = 0; ci < contacts.size(); ++ci) {
+			const DynContact&  c = contacts[ci];
+			const BlockContact K = blockContactStiffness(bodies, c);
+			diag[c.body1] += K.K11;
+			diag[c.body2] += K.K22;
+			offOfContact[ci] = c.body1 < c.body2 ? K.K12 : BlockMat(K.K12.transpose());
+		}
+		std::vector<Real> bound(n, 0);
+		for (size_t b = 0; b < n; ++b)
+			if (!bodies[b].fixed) bound[b] = lambdaMaxBlock(W[b] * diag[b] * W[b].transpose());
+		const std::vector<Real> diagBound = bound;
+		for (const auto& kv : sumByPair(contacts, offOfContact)) {
+			const int a = kv.first.first, b = kv.first.second;
+			if (bodies[a].fixed || bodies[b].fixed) continue;
+			const Real norm2 = normBlock(W[a] * kv.second * W[b].transpose());
+			bound[a] += norm2, bound[b] += norm2;
+		}
+		return gershgorinResult(bodies, bound, diagBound, perBody, perBodyDiag);
+	}
+
+	// Dense K x = omega^2 M x with 3 or 6 DOFs per free body.
+	Real exactBlocks(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts)
+	{
+		std::vector<int> dof(bodies.size(), -1);
+		int              N = 0;
+		for (size_t b = 0; b < bodies.size(); ++b)
+			if (!bodies[b].fixed) dof[b] = N, N += dofs(bodies[b]);
+		Eigen::MatrixXd K = Eigen::MatrixXd::Zero(N, N), M = Eigen::MatrixXd::Zero(N, N);
+		for (size_t b = 0; b < bodies.size(); ++b) {
+			const DynBody& body = bodies[b];
+			if (body.fixed) continue;
+			inverseMassFactor(body); // validates the (theta, strain) mass
+			M(dof[b], dof[b]) = M(dof[b] + 1, dof[b] + 1) = body.mass;
+			if (!body.deformable) M(dof[b] + 2, dof[b] + 2) = body.inertia;
+			else {
+				M.block<4, 4>(dof[b] + 2, dof[b] + 2) = thetaStrainMass(body);
+				K.block<3, 3>(dof[b] + 3, dof[b] + 3) = body.strainStiffness;
+			}
+		}
+		for (const DynContact& c : contacts) {
+			const BlockContact Kc = blockContactStiffness(bodies, c);
+			const int          d1 = dof[c.body1], d2 = dof[c.body2];
+			if (d1 >= 0) K.block(d1, d1, Kc.K11.rows(), Kc.K11.cols()) += Kc.K11;
+			if (d2 >= 0) K.block(d2, d2, Kc.K22.rows(), Kc.K22.cols()) += Kc.K22;
+			if (d1 >= 0 && d2 >= 0) {
+				K.block(d1, d2, Kc.K12.rows(), Kc.K12.cols()) += Kc.K12;
+				K.block(d2, d1, Kc.K12.cols(), Kc.K12.rows()) += Kc.K12.transpose();
+			}
+		}
+		const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M, Eigen::EigenvaluesOnly);
+		if (es.info() != Eigen::Success) throw std::invalid_argument("criticalTimeStepExact: the eigen-solve failed");
+		const Real lmax = es.eigenvalues().maxCoeff();
+		return lmax > 0 ? 2 / std::sqrt(lmax) : std::numeric_limits<Real>::infinity();
+	}
 } // namespace
 
 void contactRowBounds(const std::vector<DynBody>& bodies, const DynContact& c, Real& add1, Real& add2, Real* diag1, Real* diag2)
 {
 	checkContact(bodies, c);
 	const DynBody &b1 = bodies[c.body1], &b2 = bodies[c.body2];
+	if (freeDeformable(b1) || freeDeformable(b2)) return rowBoundsBlocks(bodies, c, add1, add2, diag1, diag2);
 	const ContactBlocks K = contactStiffness(bodies, c);
 	add1 = b1.fixed ? 0 : lambdaMax(inverseSqrtMass(b1).asDiagonal() * K.K11 * inverseSqrtMass(b1).asDiagonal());
 	add2 = b2.fixed ? 0 : lambdaMax(inverseSqrtMass(b2).asDiagonal() * K.K22 * inverseSqrtMass(b2).asDiagonal());
@@ -142,6 +348,7 @@ Real criticalTimeStepGershgorin(
         const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts, std::vector<Real>* perBody, std::vector<Real>* perBodyDiag)
 {
 	check(bodies, contacts);
+	if (anyFreeDeformable(bodies)) return gershgorinBlocks(bodies, contacts, perBody, perBodyDiag);
 	const size_t n = bodies.size();
 	std::vector<Mat3> diag(n, Mat3::Zero());
 	std::vector<Mat3> offOfContact(contacts.size());
@@ -152,21 +359,7 @@ Real criticalTimeStepGershgorin(
 		diag[c.body2] += K.K22;
 		offOfContact[ci] = c.body1 < c.body2 ? K.K12 : Mat3(K.K12.transpose()); // the (lower id, higher id) block
 	}
-	// All contacts between the same pair of bodies summed first: contacts sorted by their pair.
-	auto pairKey = [&](size_t ci) {
-		const DynContact& c = contacts[ci];
-		return (uint64_t(std::min(c.body1, c.body2)) << 32) | uint64_t(std::max(c.body1, c.body2));
-	};
-	std::vector<size_t> order(contacts.size());
-	for (size_t ci = 0; ci < order.size(); ++ci) order[ci] = ci;
-	std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return pairKey(a) < pairKey(b); });
-	std::vector<std::pair<std::pair<int, int>, Mat3>> off; // (i<j) -> K_ij block
-	off.reserve(order.size());
-	for (size_t k = 0; k < order.size(); ++k) {
-		const uint64_t key = pairKey(order[k]);
-		if (k > 0 && key == pairKey(order[k - 1])) off.back().second += offOfContact[order[k]];
-		else off.push_back({ { int(key >> 32), int(key & 0xffffffffu) }, offOfContact[order[k]] });
-	}
+	const auto off = sumByPair(contacts, offOfContact); // (i<j) -> K_ij block
 	// Scale to S = M^-1/2 K M^-1/2 block by block. Block Gershgorin bound for the rows of each free body b:
 	//   lambda_max <= max_b [ lambda_max(S_bb) + sum_{c != b, free} ||S_bc||_2 ].
 	std::vector<Real> bound(n, 0);
@@ -181,21 +374,13 @@ Real criticalTimeStepGershgorin(
 		bound[a] += norm2; // ||S_ab|| = ||S_ba||
 		bound[b] += norm2;
 	}
-	Real lmax = 0;
-	for (size_t b = 0; b < n; ++b)
-		if (!bodies[b].fixed) lmax = std::max(lmax, bound[b]);
-	if (perBodyDiag) perBodyDiag->assign(diagBound.begin(), diagBound.end());
-	if (perBody) {
-		perBody->assign(n, 0);
-		for (size_t b = 0; b < n; ++b)
-			if (!bodies[b].fixed) (*perBody)[b] = bound[b];
-	}
-	return lmax > 0 ? 2 / std::sqrt(lmax) : std::numeric_limits<Real>::infinity();
+	return gershgorinResult(bodies, bound, diagBound, perBody, perBodyDiag);
 }
 
 Real criticalTimeStepExact(const std::vector<DynBody>& bodies, const std::vector<DynContact>& contacts)
 {
 	check(bodies, contacts);
+	if (anyFreeDeformable(bodies)) return exactBlocks(bodies, contacts);
 	std::vector<int> dof(bodies.size(), -1);
 	int              nf = 0;
 	for (size_t b = 0; b < bodies.size(); ++b)

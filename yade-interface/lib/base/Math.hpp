@@ -80,6 +80,10 @@ namespace serialization {
 		int &x = v[0], &y = v[1], &z = v[2];
 		ar& BOOST_SERIALIZATION_NVP(x) & BOOST_SERIALIZATION_NVP(y) & BOOST_SERIALIZATION_NVP(z);
 	}
+	template <class Archive> void serialize(Archive& ar, yade::Se3r& g, const unsigned int)
+	{
+		ar& boost::serialization::make_nvp("position", g.position) & boost::serialization::make_nvp("orientation", g.orientation);
+	}
 	template <class Archive> void serialize(Archive& ar, yade::Quaternionr& q, const unsigned int)
 	{
 		yade::Real &w = q.w(), &x = q.x(), &y = q.y(), &z = q.z();

@@ -281,6 +281,18 @@ public:                                                                         
 public:                                                                                                                                                \
 	YADE_DECLARE_SERIALIZABLE_OVERRIDES
 
+// The same, for a class whose constructor also binds members before the attributes (State's pos, ori).
+#define YADE_BUILTIN_CLASS_INIT(thisClass, baseClass, attrs, inits, ctor)                                                                             \
+public:                                                                                                                                                \
+	BOOST_PP_SEQ_FOR_EACH(_YADE_ATTR_DECLARE, ~, attrs)                                                                                            \
+	thisClass() _YADE_INIT_LIST(inits, attrs)                                                                                                     \
+	{                                                                                                                                              \
+		ctor;                                                                                                                                  \
+	}                                                                                                                                              \
+	_YADE_SERIALIZE_BODY(baseClass, attrs)                                                                                                         \
+public:                                                                                                                                                \
+	YADE_DECLARE_SERIALIZABLE_OVERRIDES
+
 #define YADE_DECLARE_SERIALIZABLE_OVERRIDES                                                                                                            \
 	void                pySetAttr(const std::string& key, const boost::python::object& value) override;                                            \
 	boost::python::dict pyDict() const override;                                                                                                   \

