@@ -39,7 +39,7 @@ void BlockStrainIntegrator::action()
 	corrections.clear();
 	Energies e;
 	for (const auto& b : scene->bodies->body) {
-		if (!b || !b->state || !b->shape) continue;
+		if (!b || !b->state || !b->shape || b->subdomain != scene->subdomain) continue; // (yade.mpy: this rank's blocks, as NewtonIntegrator)
 		DeformableState* ds = deformableState(b->state.get());
 		if (!ds) continue;
 		const auto* poly = dynamic_cast<const Polygon2D*>(b->shape.get());
@@ -132,7 +132,10 @@ void BlockStrainIntegrator::markStrainSides()
 		auto* g = I && I->geom ? dynamic_cast<RbsmGeom*>(I->geom.get()) : nullptr;
 		if (!g) continue;
 		auto deformable = [&](Body::id_t id) { return size_t(id) < bodies.size() && bodies[id] && deformableState(bodies[id]->state.get()); };
-		g->strainSides = (deformable(I->getId1()) ? 1 : 0) | (deformable(I->getId2()) ? 2 : 0);
+		const int sides = (deformable(I->getId1()) ? 1 : 0) | (deformable(I->getId2()) ? 2 : 0);
+		if (sides == g->strainSides) continue;
+		g->strainSides = sides;
+		if (sides) g->recordStrainsMade(*bodies[I->getId1()]->state, *bodies[I->getId2()]->state);
 	}
 }
 

@@ -24,8 +24,9 @@ public:
 		"velocities and positions (central differences, the same O.dt), with NewtonIntegrator's damping (Cundall's, per strain component); "
 		"the coupled angular acceleration is handed to NewtonIntegrator as a torque (NewtonIntegrator stays YADE's). Energies (O.trackEnergy): "
 		"strainKinetic (the strain modes' kinetic energy beyond the rigid rotation's) and strainElastic (½ A t εᵀDε); the damping's work goes to nonviscDamp. "
-		"A fixed block (all DOFs blocked) keeps its strain. Place it right before :yref:`NewtonIntegrator` (yade_rbsm.engines() does); "
-		"it does nothing while no DeformableState exists.",
+		"A fixed block (all DOFs blocked) keeps its strain. Place it right before :yref:`NewtonIntegrator` (yade_rbsm.engines() does "
+		"when a material is deformable); it does nothing while no DeformableState exists. Under yade.mpy it integrates its rank's "
+		"blocks (Body.subdomain), as NewtonIntegrator does.",
 		((long, deformableSeen, -1, (Attr::readonly | Attr::noSave), "DeformableState objects alive at the last check of the joints' strainSides (a change: the joints are marked again).")),
 		/*ctor*/,
 		/*py*/

@@ -32,6 +32,7 @@ namespace rbsm_boundary {
 			geom->thickness = block.thickness;
 			geom->reducedMass = RbsmGeom::reducedMassOf(s1, s2); // (the block-block joints' formula)
 			geom->strainSides = deformableState(&s1) ? 1 : 0;
+			if (geom->strainSides) geom->recordStrainsMade(s1, s2);
 			I->geom           = geom;
 			g                 = geom.get();
 		} else if (!c.touching) {

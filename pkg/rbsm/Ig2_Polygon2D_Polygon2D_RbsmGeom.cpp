@@ -186,6 +186,7 @@ RbsmGeom* Ig2_Polygon2D_Polygon2D_RbsmGeom::newGeom(const Pair& pair, const Stat
 	geom->shapeRevision2 = pair.B.revision;
 	geom->searchMemory   = memory;
 	geom->strainSides    = (deformableState(&state1) ? 1 : 0) | (deformableState(&state2) ? 2 : 0);
+	if (geom->strainSides) geom->recordStrainsMade(state1, state2);
 	I.geom               = geom;
 	return geom.get();
 }

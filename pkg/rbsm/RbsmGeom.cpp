@@ -26,8 +26,28 @@ void RbsmGeom::markLost(Real separationNow)
 	frozen.reset();
 }
 
+void RbsmGeom::preSave(RbsmGeom&)
+{
+	frozenState = frozen.get() ? rbsm::packFrozen(*frozen.get()) : std::vector<Real>();
+	strainsMadeState.clear();
+	if (const StrainsMade* m = strainsMade.get())
+		for (const Vector3r* e : { &m->block1, &m->block2 })
+			strainsMadeState.insert(strainsMadeState.end(), e->data(), e->data() + 3);
+}
+
+void RbsmGeom::recordStrainsMade(const State& state1, const State& state2)
+{
+	StrainsMade m;
+	if (const DeformableState* d = (strainSides & 1) ? deformableState(&state1) : nullptr) m.block1 = d->strain;
+	if (const DeformableState* d = (strainSides & 2) ? deformableState(&state2) : nullptr) m.block2 = d->strain;
+	if (m.block1.isZero(0) && m.block2.isZero(0)) strainsMade.reset(); // (unstrained: nothing to keep)
+	else strainsMade.set(m);
+}
+
 void RbsmGeom::postLoad(RbsmGeom&)
 {
+	if (strainsMadeState.size() == 6) strainsMade.set(StrainsMade { Vector3r(strainsMadeState.data()), Vector3r(strainsMadeState.data() + 3) });
+	else strainsMade.reset();
 	holdFrozen(rbsm::unpackFrozen(frozenState));
 	if (nIP > 0) setIntegrationPoints(nIP); // throws for a file with nIP outside 1..8
 	else rule = nullptr;
@@ -43,8 +63,10 @@ void RbsmGeom::addStrainMotion(const State& state1, const State& state2)
 		// the displacement (or velocity) of the strain e at the world point x: R B(Rᵀ(x − c)) e
 		auto       field = [&](const Vector2r& x, const Vector3r& e) { return pose.rotate(rbsm::strainDisplacement(pose.applyInverse(x), e)); };
 		const Real sign  = side == 2 ? 1 : -1; // block 2's motion relative to block 1's
-		d0 -= sign * normal.dot(field(p0, ds->strain));
-		d1 -= sign * normal.dot(field(p1, ds->strain));
+		const StrainsMade* made   = strainsMade.get();
+		const Vector3r     strain = made ? Vector3r(ds->strain - (side == 1 ? made->block1 : made->block2)) : ds->strain;
+		d0 -= sign * normal.dot(field(p0, strain));
+		d1 -= sign * normal.dot(field(p1, strain));
 		const Vector2r v0 = field(p0, ds->strainRate);
 		relativeVelocity += sign * v0;
 		strainSlope += sign * (field(p1, ds->strainRate) - v0);

@@ -36,6 +36,7 @@ public:
 		"point, normal overlap and tangential displacement increment (seed paper eq. 8-9). Created by "
 		":yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom`.",
 		((std::vector<Real>, frozenState, , Attr::hidden, "The frozen contact (rbsm::FrozenContact, see frozenSteps) packed for saving; empty when there is none."))
+		((std::vector<Real>, strainsMadeState, , Attr::hidden, "The deformable blocks' strains when the joint was made (6 numbers, see strainSides) for saving; empty when there are none."))
 		((Vector2r, normal, Vector2r::Zero(), Attr::readonly, "Unit normal of the contact line, from body 1 to body 2."))
 		((Vector2r, p0, Vector2r::Zero(), Attr::readonly, "Start of the contact segment on the reference line [m]."))
 		((Vector2r, p1, Vector2r::Zero(), Attr::readonly, "End of the contact segment (p0→p1 along the tangent) [m]."))
@@ -96,6 +97,17 @@ public:
 	void addStrainMotion(const State& state1, const State& state2);
 	/// The strain rates' part of the change of the relative velocity from p0 to p1 [m/s] (addStrainMotion).
 	Vector2r strainSlope = Vector2r::Zero();
+	/// The deformable blocks' strains when the joint was made (strainSides; on the heap: a rigid joint carries one
+	/// pointer): the joint's springs take the strain since then, as the shear spring takes the slip since then.
+	/// The contact is found on the blocks' undeformed shapes, so a contact made between strained blocks would
+	/// otherwise start with their strain's overlap, a spring force from nothing (a pile of deformable blocks
+	/// gained 1.1 % of the work of gravity). Zero for an assembly bonded unstrained.
+	struct StrainsMade {
+		Vector3r block1 = Vector3r::Zero(), block2 = Vector3r::Zero();
+	};
+	rbsm::HeapValue<StrainsMade> strainsMade;
+	/// Records the strains of the joint's deformable blocks now (when it is made, or its blocks become deformable).
+	void recordStrainsMade(const State& state1, const State& state2);
 	/// The step's contact c (rbsm::EdgeContact, in block 1's frame frame1, exact or frozen) written to
 	/// the world frame, with the centroids, Kawai's h1 and h2 and the relative motion along the segment
 	/// (the fields kinematics() reads back for the law); the joint is not lost.
@@ -152,7 +164,7 @@ public:
 		if (fb) return a.mass;
 		return a.mass * b.mass / (a.mass + b.mass);
 	}
-	void                preSave(RbsmGeom&) { frozenState = frozen.get() ? rbsm::packFrozen(*frozen.get()) : std::vector<Real>(); }
+	void                preSave(RbsmGeom&);
 	void                postLoad(RbsmGeom&);
 	REGISTER_CLASS_INDEX(RbsmGeom, IGeom);
 };

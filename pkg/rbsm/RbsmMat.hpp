@@ -37,7 +37,7 @@ public:
 			"assembly (:yref:`Ip2_RbsmMat_RbsmMat_RbsmPhys.setCohesionNow`, as the builders do) are *welded* (:yref:`RbsmPhys.welded`: stiff "
 			"elastic springs that neither slip nor break, the cuts of a continuum), while joints made later, broken ones and the builders' "
 			"joint sets and traces keep the Mohr-Coulomb law. Rigid blocks (False, default) are Kawai's. Read when a block is built "
-			"(newAssocState) and when a joint is made; needs :yref:`BlockStrainIntegrator` in O.engines (yade_rbsm.engines() has it)."))
+			"(newAssocState) and when a joint is made; needs :yref:`BlockStrainIntegrator` in O.engines (yade_rbsm.engines() adds it when a material is deformable)."))
 		((Real, penalty, 100, Attr::triggerPostLoad,
 			"Deformable blocks: the stiffness of their joints' springs as a multiple of Kawai's (≥ 1): Kawai's h/E′ is the compliance "
 			"of a rigid block's half, which a deformable block carries in itself, so its side of a joint adds h/(penalty·E′). Larger is "

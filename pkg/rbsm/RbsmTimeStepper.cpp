@@ -364,7 +364,7 @@ Real RbsmTimeStepper::firstContactEstimate()
 		} catch (const std::invalid_argument&) {
 			continue; // a material the joints refuse is reported where they meet it
 		}
-		const Real r = size_t(b->id) < inradius.size() ? inradius[b->id] : rbsm::centroidInradius(poly->vertices);
+		const Real r = size_t(b->id) < motionWatch.inradius.size() ? motionWatch.inradius[b->id] : rbsm::centroidInradius(poly->vertices);
 		// a given joint stiffness: compliance at most 1/(2 kn) per block, so a pair is at least kn stiff
 		if (mat->jointKn > 0) En = std::max(En, 2 * mat->jointKn * r);
 		if (mat->jointKs > 0) Es = std::max(Es, 2 * mat->jointKs * r);
@@ -404,6 +404,7 @@ void RbsmTimeStepper::fullCheck()
 {
 	lastCheck = scene->iter;
 	if (DeformableState::alive.load(std::memory_order_relaxed) > 0) requireStrainIntegrator();
+	std::vector<Real>& inradius = motionWatch.inradius;
 	inradius.assign(scene->bodies->body.size(), 0);
 	for (const auto& b : scene->bodies->body)
 		if (b)
@@ -507,20 +508,6 @@ void RbsmTimeStepper::applyMassScale()
 	}
 }
 
-// A block that moves by a good part of its own size in one step passes through thin neighbours
-// (tunnelling) or is exploding: never silent. Lowers travelDt to the step at which this block would
-// move by half that (for setDt: a block with short, soft edges, e.g. a near-circle, has a long stable step).
-[[gnu::always_inline]] inline void RbsmTimeStepper::checkMotion(const Body& b, const Polygon2D& poly, Real& travelDt)
-{
-	const State& s = *b.state;
-	if (size_t(b.id) >= inradius.size()) inradius.resize(size_t(b.id) + 1, 0);
-	Real& r = inradius[b.id];
-	if (!(r > 0)) r = rbsm::centroidInradius(poly.vertices);
-	const Real speed = s.vel.head<2>().norm() + std::abs(s.angVel.z()) * poly.circumradius, motion = speed * scene->dt;
-	if (speed > 0) travelDt = std::min(travelDt, 0.5 * maxStepMotion * r / speed);
-	if (motion > maxStepMotion * r) reportMotion(b, motion, r); // (a NaN O.dt is the step check's to refuse, not a move)
-}
-
 void RbsmTimeStepper::reportMotion(const Body& b, Real motion, Real r)
 {
 	const State& s = *b.state;
@@ -541,44 +528,14 @@ void RbsmTimeStepper::reportMotion(const Body& b, Real motion, Real r)
 	});
 }
 
-// YADE's collider enlarges each box by its Verlet sweep and runs again once a body's centroid has
-// moved beyond it (NewtonIntegrator), but a rotation moves a block's corners too: by R·χ, χ the chord
-// of the rotation since the box was made. A block tipping onto its neighbour was found deep inside
-// it, a step of spring energy from nothing at every landing (a rocking block bounced metres high).
-// So the collider runs at the next step when the next pose can leave the box: |Δx|∞ + R χ, with
-// this step's velocities added twice as margin, beyond the sweep (and half the box's round-off margin).
-[[gnu::always_inline]] inline void RbsmTimeStepper::keepBoundAhead(const Body& b, const Polygon2D& poly, bool& runCollider)
-{
-	const State& st = *b.state;
-	Real         c, s;
-	planarCosSin(st.ori, c, s);
-	BoundPose& ref = boundPose[size_t(b.id)];
-	if (b.bound->lastUpdateIter == scene->iter) ref = BoundPose { scene->iter, c, s }; // the collider ran this step
-	else if (b.bound->lastUpdateIter == scene->iter - 1 && ref.iter != scene->iter - 1)
-		// made after this engine ran in the last step, so after its integration: yade.mpy runs its
-		// collider at the end of a step. Nothing has moved since; the pose is the one the box saw.
-		ref = BoundPose { scene->iter - 1, c, s };
-	if (runCollider) return;
-	if (ref.iter != b.bound->lastUpdateIter) { // a box made while this engine was not watching
-		runCollider = true;
-		return;
-	}
-	const Real     R     = poly.circumradius;
-	const Real     chord = std::hypot(c - ref.c, s - ref.s);
-	const Vector3r d     = st.pos - b.bound->refPos;
-	const Real     move  = std::max(std::abs(d.x()), std::abs(d.y())) + 2 * scene->dt * st.vel.head<2>().cwiseAbs().maxCoeff()
-	        + R * (chord + 2 * scene->dt * std::abs(st.angVel.z()));
-	if (move > b.bound->sweepLength + 0.5e-6 * R) runCollider = true;
-}
-
-// Both per-body checks of every step for one block (in action()'s pass over the bodies; inlined there,
-// as in the separate pass before: a call per block cost 11 instructions per contact-step on a wall).
+// Both per-body checks of every step for one block (BlockMotionWatch; in action()'s pass over the bodies).
 [[gnu::always_inline]] inline void RbsmTimeStepper::watchBody(const Body& b, Real& travelDt, bool& runCollider)
 {
 	const Polygon2D* poly = polygonOf(b);
 	if (!poly || !ownedHere(b)) return;
-	if (b.bound) keepBoundAhead(b, *poly, runCollider);
-	if (maxStepMotion > 0 && !fixedBlock(*b.state)) checkMotion(b, *poly, travelDt);
+	if (b.bound) motionWatch.keepBoundAhead(*scene, b, *poly, runCollider);
+	Real motion, r;
+	if (maxStepMotion > 0 && !fixedBlock(*b.state) && motionWatch.movesTooFar(*scene, b, *poly, maxStepMotion, travelDt, motion, r)) reportMotion(b, motion, r);
 }
 
 // Deformable blocks whose strain nobody integrates would be rigid blocks with soft joints: refused, not run.
@@ -590,7 +547,7 @@ void RbsmTimeStepper::requireStrainIntegrator()
 		if (b && deformableState(b->state.get()))
 			throw std::runtime_error("RbsmTimeStepper: body #" + std::to_string(b->id)
 			                         + " is a deformable block (DeformableState) but O.engines has no BlockStrainIntegrator to integrate its strain: "
-			                           "put one right before NewtonIntegrator (yade_rbsm.engines() does).");
+			                           "put one right before NewtonIntegrator (yade_rbsm.engines() does when a material is deformable, or engines(deformable=True)).");
 }
 
 Real RbsmTimeStepper::stableDt() const
@@ -657,7 +614,7 @@ void RbsmTimeStepper::action()
 	//   under density scaling slow their blocks (raiseMassScale): the watch then follows them. A
 	//   reshaped block is watched after the full estimate it causes (its inner radius changes).
 	const auto& bodies = scene->bodies->body;
-	if (boundPose.size() < bodies.size()) boundPose.resize(bodies.size());
+	motionWatch.grow(bodies.size());
 	const long made        = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
 	const bool watchLater  = densityScaling && made != jointsSeen;
 	Real       travelDt    = std::numeric_limits<Real>::infinity();
@@ -717,7 +674,7 @@ void RbsmTimeStepper::action()
 		return refuse(msg.str());
 	}
 	// The travel limit never takes the step below a tenth of the stable one: a block exploding
-	// (thrown at km/s) is reported by checkMotion, not run in slow motion.
+	// (thrown at km/s) is reported by the motion watch, not run in slow motion.
 	stepDt = std::min({ limit, maxDt, std::max(travelDt, limit / 10) });
 	if (setDt) {
 		if (std::isfinite(stepDt)) scene->dt = dtSet = stepDt;

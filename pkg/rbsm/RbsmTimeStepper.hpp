@@ -1,6 +1,7 @@
 // RbsmTimeStepper: the stability limit of the explicit integration of an RBSM block system.
 #pragma once
 #include <core/GlobalEngine.hpp>
+#include <pkg/rbsm/BlockMotionWatch.hpp>
 #include <pkg/rbsm/VtkRecorderGuard.hpp>
 #include <pkg/rbsm/kernel/CriticalTimeStep.hpp>
 
@@ -107,11 +108,9 @@ private:
 	void fullCheck();
 	void requireStrainIntegrator();
 	void addJointsMadeThisStep();
-	inline void watchBody(const Body& b, Real& travelDt, bool& runCollider); // keepBoundAhead and checkMotion of one block
+	inline void watchBody(const Body& b, Real& travelDt, bool& runCollider); // the motion watch of one block
 	void        takeScriptDt(); // an O.dt set from outside since this engine set it: setDt off
-	inline void checkMotion(const Body& b, const Polygon2D& poly, Real& travelDt); // (defined, and used, in the .cpp only)
 	void        reportMotion(const Body& b, Real motion, Real r); // (the rare path, out of the loop)
-	inline void keepBoundAhead(const Body& b, const Polygon2D& poly, bool& runCollider);
 	void scaleMasses();
 	Real massScaleOf(size_t id) const;
 	void raiseMassScale(size_t id, Real s);
@@ -133,16 +132,11 @@ private:
 	std::vector<rbsm::DynBody>    dynBodies;
 	std::vector<int>              dynIndex, dynIds;
 	std::vector<rbsm::DynContact> dynContacts, dashpots;
-	std::vector<Real>             inradius; // per body id, from the last full estimate
 	std::vector<Real>             firstOmega2; // firstContactEstimate's ω² of each free block without joints (for scaleMasses)
 	long                          jointsSeen = -1;
 	long                          savedLastCheck = -1; // lastCheck around a save (preSave, postSave)
 	long                          editsSeen  = -1; // RbsmPhys::edits at the last step (a joint's kn, ks set from Python since: a full estimate)
 	static long                   jointEdits();
-	struct BoundPose {
-		long iter = -1; // Bound::lastUpdateIter when c, s were taken
-		Real c = 1, s = 0;
-	};
 	std::vector<const Interaction*> sortedJoints; // jointsByIds' result
 	struct ScaledLoad {
 		Body::id_t id;
@@ -151,7 +145,7 @@ private:
 	std::vector<ScaledLoad>         scaledLoads;  // applyMassScale's corrections of this step
 	Vector3r                        newtonGravity     = Vector3r::Zero(); // NewtonIntegrator.gravity, read once per full estimate (densityScaling)
 	bool                            newtonGravityRead = false;
-	std::vector<BoundPose> boundPose; // per body id: its rotation when the collider last made its box
+	BlockMotionWatch                motionWatch; // the collider trigger and the motion check of every block (and its inner radius)
 	std::vector<Body::id_t> reshapedIds; // this step's reshaped blocks, watched after the full estimate
 };
 REGISTER_SERIALIZABLE(RbsmTimeStepper);

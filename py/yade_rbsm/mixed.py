@@ -3,7 +3,7 @@ from yade import wrapper
 
 
 def mixed_engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, interval=100,
-                  verlet_dist=None, update_tolerance=0.0):
+                  verlet_dist=None, update_tolerance=0.0, deformable=None):
     """YADE's simulation loop for blocks together with spheres, walls and facets, to assign to O.engines::
 
         ForceResetter
@@ -17,7 +17,7 @@ def mixed_engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2
              Law2_ScGeom_FrictPhys_CundallStrack(sphericalBodies=False)])   # spheres (true torques on blocks)
         RbsmTimeStepper
         RbsmPairCheck                 # blocks next to shapes no functor handles (a Box): reported, run stopped
-        BlockStrainIntegrator         # strain of deformable blocks (nothing without them)
+        [BlockStrainIntegrator]       # deformable blocks only (engines(deformable=...))
         NewtonIntegrator(gravity, damping)   # last, as in YADE's scripts
 
     The arguments are engines()'s. The time stepper counts the block joints only (also those on walls and
@@ -28,7 +28,7 @@ def mixed_engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2
     both RbsmMat and FrictMat (yade_rbsm.dispatch.check_materials).
     """
     from yade import O
-    from .scene import _smallest_block
+    from .scene import _smallest_block, strain_integrator
     from .dispatch import check_materials
 
     check_materials()
@@ -59,6 +59,6 @@ def mixed_engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2
         wrapper.RbsmTimeStepper(safetyFactor=safety, setDt=True, maxDt=O.dt if spheres else float("inf"), interval=interval,
                                 label="timeStepper"),
         wrapper.RbsmPairCheck(label="pairCheck"),
-        wrapper.BlockStrainIntegrator(label="strainIntegrator"),
+    ] + strain_integrator(deformable) + [
         wrapper.NewtonIntegrator(gravity=gravity, damping=damping, label="newton"),  # last, as in YADE's scripts
     ]

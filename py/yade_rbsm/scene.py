@@ -7,7 +7,7 @@ __all__ = ["engines", "critical_time_step", "advance", "time_stepper"]
 
 
 def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safety=0.8, impact_safety=0.25, set_dt=True, interval=100, enlarge=0.0,
-            verlet_dist=None, update_tolerance=0.0, mpi=None, sorted_loop=False):
+            verlet_dist=None, update_tolerance=0.0, mpi=None, sorted_loop=False, deformable=None):
     """YADE's simulation loop for RBSM blocks, to assign to O.engines (and edit if needed)::
 
         ForceResetter
@@ -17,7 +17,7 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
                         [Law2_RbsmGeom_RbsmPhys_MohrCoulomb])    # tractions, Mohr-Coulomb, tension cut-off
         RbsmTimeStepper                                          # stability limit of the explicit step
         RbsmPairCheck                                            # no silent pass-through
-        BlockStrainIntegrator                                    # strain of deformable blocks (RbsmMat.deformable)
+        [BlockStrainIntegrator]                                  # deformable blocks only (RbsmMat.deformable)
         NewtonIntegrator(gravity, damping)                       # central differences, last (label newton)
 
     *damping* is NewtonIntegrator's non-viscous (Cundall) damping, for quasi-static stages;
@@ -40,9 +40,12 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     numbers bit for bit (and so does a run continued after a save/load), at the cost of a sort every
     step; otherwise the sums follow the container's order and the runs differ by round-off, which
     a chaotic or slipping scene amplifies.
+    *deformable*: put BlockStrainIntegrator (label strainIntegrator) before NewtonIntegrator, which integrates
+    the strain of deformable blocks (RbsmMat.deformable, DeformableState); None (default): if a material in
+    O.materials or of a body in O.bodies is deformable, so a rigid scene's list is as before (a deformable
+    block without it is refused by RbsmTimeStepper at its first step, naming the body).
     Labels: collider, ig2, ip2, law, timeStepper, pairCheck (RbsmPairCheck: reports blocks next to shapes that
-    no functor handles), rbsmMpiSync, strainIntegrator (BlockStrainIntegrator: returns at once without deformable
-    blocks), and newton: NewtonIntegrator is last, YADE's habit (``O.engines[-1].damping``,
+    no functor handles), rbsmMpiSync, strainIntegrator, and newton: NewtonIntegrator is last, YADE's habit (``O.engines[-1].damping``,
     engines appended after it see the step's positions). A Polygon2D body without RbsmMat in O.bodies raises ValueError.
     Periodic cells (O.periodic) are not supported: ValueError.
     """
@@ -101,9 +104,20 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
         stepper,
     ] + sync + [
         wrapper.RbsmPairCheck(label="pairCheck"),  # blocks next to shapes no functor handles: reported, run stopped
-        wrapper.BlockStrainIntegrator(label="strainIntegrator"),  # deformable blocks' strain (nothing without them)
+    ] + strain_integrator(deformable) + [
         wrapper.NewtonIntegrator(gravity=gravity, damping=damping, label="newton"),  # last, as in YADE's scripts
     ]
+
+
+def strain_integrator(deformable=None):
+    """[BlockStrainIntegrator(label="strainIntegrator")] for a scene with deformable blocks, else []:
+    *deformable* True or False, or None to look at O.materials and the materials of O.bodies."""
+    from yade import O
+
+    if deformable is None:
+        mats = list(O.materials) + [b.material for b in O.bodies if b is not None and b.material is not None]
+        deformable = any(getattr(m, "deformable", False) for m in mats)
+    return [wrapper.BlockStrainIntegrator(label="strainIntegrator")] if deformable else []
 
 
 def _smallest_block():

@@ -4,7 +4,8 @@ three seeds, where rigid blocks (Kawai's springs) give an assembly whose ν is s
 (ν_app = (1 − α)/(3 + α), α = ks/kn, whatever ν is given). The plate's strain is the least-squares displacement
 gradient of its blocks' centroids, so the welded joints' penalty compliance is in it (RbsmMat.penalty = 100).
 The mean of the blocks' own strains must be the material's D⁻¹σ (to 0.1 %): the element is exact for a uniform
-stress, whatever the penalty. Fails on da6a37e (no RbsmMat.deformable)."""
+stress, whatever the penalty. The plates settle under RbsmTimeStepper.densityScaling (the strain's mass scaled
+with the block's: the same E and ν as unscaled, in half the steps). Fails on da6a37e (no RbsmMat.deformable)."""
 import pytest
 
 from conftest import run_scene
@@ -16,7 +17,7 @@ CASES = [(0.2, False, 1), (0.45, True, 2), (0.3, True, 3), (0.0, False, 2), (0.4
 @pytest.mark.parametrize("nu,plane_strain,seed", CASES, ids=["nu%g-%s-seed%d" % (n, "strain" if s else "stress", k) for n, s, k in CASES])
 def test_plate_returns_material_constants(nu, plane_strain, seed):
     E, sigma = 1e9, 1e5
-    args = {"n": 400, "seed": seed, "nu": nu, "planeStrain": plane_strain, "E": E, "sigma": sigma, "damping": 0.7, "tol": 2e-5}
+    args = {"n": 400, "seed": seed, "nu": nu, "planeStrain": plane_strain, "E": E, "sigma": sigma, "damping": 0.7, "tol": 2e-5, "densityScaling": True}
     d = run_scene("plate", dict(args, deformable=True))
     r = run_scene("plate", dict(args, deformable=False))
     print("nu=%g %s seed %d: deformable E %.4g (%+.2f %%) nu %.4f; rigid E %.4g (%+.2f %%) nu %.4f; dt ratio %.3f"

@@ -62,3 +62,24 @@ def test_making_deformable_blocks(tmp_path):
     assert r["broken_welded"] is False
     assert r["loaded"][0] == "DeformableState" and r["loaded"][2] is True
     assert "BlockStrainIntegrator" in r["no_integrator"] and "body #" in r["no_integrator"]
+
+
+RIGID_THEN_DEFORMABLE = r"""
+import yade_rbsm
+O.materials.append(RbsmMat(young=1e8, density=2000))
+rigid = [type(e).__name__ for e in yade_rbsm.engines()]
+mixed = [type(e).__name__ for e in yade_rbsm.mixed_engines()]
+forced = [type(e).__name__ for e in yade_rbsm.engines(deformable=True)]
+O.materials.append(RbsmMat(young=1e8, density=2000, deformable=True))
+auto = [type(e).__name__ for e in yade_rbsm.engines()]
+report(rigid=rigid, mixed=mixed, forced=forced, auto=auto)
+"""
+
+
+def test_engines_add_the_strain_integrator_only_for_deformable_materials():
+    (r,) = run_ok(RIGID_THEN_DEFORMABLE)
+    # a rigid scene's O.engines is as before (scripts index it); NewtonIntegrator stays last
+    assert "BlockStrainIntegrator" not in r["rigid"] and "BlockStrainIntegrator" not in r["mixed"]
+    for names in (r["forced"], r["auto"]):
+        assert names[-2:] == ["BlockStrainIntegrator", "NewtonIntegrator"]
+    assert len(r["auto"]) == len(r["rigid"]) + 1

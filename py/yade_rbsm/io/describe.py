@@ -40,7 +40,9 @@ RBSM_CLASSES = frozenset((
     "Gl1_Polygon2D", "Gl1_RbsmGeom", "Gl1_RbsmPhys",
     # mixed scenes: blocks with spheres, walls and facets (issue 17)
     "Ig2_Polygon2D_Sphere_ScGeom", "Ip2_RbsmMat_FrictMat_FrictPhys", "Ig2_Polygon2D_Wall_RbsmGeom",
-    "Ig2_Polygon2D_Facet_RbsmGeom", "RbsmPairCheck"))
+    "Ig2_Polygon2D_Facet_RbsmGeom", "RbsmPairCheck",
+    # deformable blocks (issue 38)
+    "DeformableState", "BlockStrainIntegrator"))
 
 _XML_CLASS = re.compile(rb'class_name="([^"]+)"')
 _BINARY_KEY = re.compile(rb"yade::[A-Za-z_][A-Za-z0-9_]*")

@@ -29,6 +29,8 @@ left = O.bodies.append(polygon2d([(-1, -1), (0, -1), (0, H + 1), (-1, H + 1)], p
 right = O.bodies.append(polygon2d([(W, -1), (W + 1, -1), (W + 1, H + 1), (W, H + 1)], platen))
 O.bodies[right].state.blockedDOFs = "yzXYZ"
 O.engines = yade_rbsm.engines(gravity=(0, 0, 0), damping=p.get("damping", 0.3), safety=p.get("safety", 0.5)) 
+if p.get("densityScaling"):
+    omega.engine("timeStepper", O).densityScaling = True
 O.engines = O.engines[:-1] + [ForceEngine(ids=[right], force=(-sigma * H, 0, 0)), O.engines[-1]]
 omega.ip2(O).setCohesionNow = True
 x0 = {i: O.bodies[i].state.pos for i in ids}

@@ -3,7 +3,8 @@ a 100x range), random velocities and spins, dropped into a box of fixed blocks; 
 contact damping. Samples the energy balance (O.trackEnergy) every `every` steps and reports the largest
 growth of the total energy against the work done by gravity and its drift at the end (drift), how many blocks left the box, NaNs and
 the step sizes used.
-params: seed, n (300), t_end (1 s), steps (cap), every, size_min (0.05), size_max (5), E (1e7), width (60), engines (kwargs)."""
+params: seed, n (300), t_end (1 s), steps (cap), every, size_min (0.05), size_max (5), E (1e7), width (60), engines (kwargs),
+deformable (False: rigid blocks)."""
 import os, sys, math, random
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from _common import params, emit, all_finite
@@ -14,6 +15,7 @@ rng = random.Random(p.get("seed", 1))
 n = p.get("n", 300)
 smin, smax = p.get("size_min", 0.05), p.get("size_max", 5.0)
 rock = RbsmMat(young=p.get("E", 1e7), poisson=0.2, density=2500, frictionAngle=math.radians(p.get("phi", 30)), cohesion=0, tensileStrength=0)
+rock.deformable = p.get("deformable", False)  # (issue 38: the same pile of deformable blocks)
 O.materials.append(rock)
 
 
