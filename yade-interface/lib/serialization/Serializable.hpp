@@ -270,18 +270,9 @@ public:                                                                         
 // The attributes are declared (with YADE's defaults) and serialized exactly as YADE does; the
 // virtual functions that YADE's macro generates are only declared, so the plugin calls the
 // definitions exported by libyade.so.
-#define YADE_BUILTIN_CLASS(thisClass, baseClass, attrs, ctor)                                                                                        \
-public:                                                                                                                                                \
-	BOOST_PP_SEQ_FOR_EACH(_YADE_ATTR_DECLARE, ~, attrs)                                                                                            \
-	thisClass() _YADE_INIT_LIST(, attrs)                                                                                                          \
-	{                                                                                                                                              \
-		ctor;                                                                                                                                  \
-	}                                                                                                                                              \
-	_YADE_SERIALIZE_BODY(baseClass, attrs)                                                                                                         \
-public:                                                                                                                                                \
-	YADE_DECLARE_SERIALIZABLE_OVERRIDES
+#define YADE_BUILTIN_CLASS(thisClass, baseClass, attrs, ctor) YADE_BUILTIN_CLASS_INIT(thisClass, baseClass, attrs, , ctor)
 
-// The same, for a class whose constructor also binds members before the attributes (State's pos, ori).
+// A class whose constructor also binds members before the attributes (State's pos, ori): inits.
 #define YADE_BUILTIN_CLASS_INIT(thisClass, baseClass, attrs, inits, ctor)                                                                             \
 public:                                                                                                                                                \
 	BOOST_PP_SEQ_FOR_EACH(_YADE_ATTR_DECLARE, ~, attrs)                                                                                            \
