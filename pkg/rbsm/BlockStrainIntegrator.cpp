@@ -18,15 +18,13 @@ YADE_PLUGIN((BlockStrainIntegrator));
 namespace {
 	std::atomic<int> blockReports { 0 };
 
-	// The density scale RbsmTimeStepper puts on body id's inertia (1: none): the strain's mass takes it too.
-	Real massScaleOf(const Scene& scene, Body::id_t id)
+	// The density scales RbsmTimeStepper puts on the bodies' inertia (null: none): the strain's mass takes them too.
+	const std::vector<Real>* massScales(const Scene& scene)
 	{
 		for (const auto& e : scene.engines)
-			if (const auto* ts = dynamic_cast<const RbsmTimeStepper*>(e.get()))
-				return ts->densityScaling && size_t(id) < ts->massScale.size() ? ts->massScale[size_t(id)] : 1;
-		return 1;
+			if (const auto* ts = dynamic_cast<const RbsmTimeStepper*>(e.get())) return ts->densityScaling ? &ts->massScale : nullptr;
+		return nullptr;
 	}
-
 }
 
 void BlockStrainIntegrator::action()
@@ -34,7 +32,8 @@ void BlockStrainIntegrator::action()
 	const long alive = DeformableState::alive.load(std::memory_order_relaxed);
 	if (alive == 0) return; // a rigid scene: nothing to do
 	if (alive != deformableSeen) markStrainSides(), deformableSeen = alive;
-	const Real damping = newtonAttribute<Real>(*scene, "damping", 0);
+	const Real               damping = newtonAttribute<Real>(*scene, "damping", 0);
+	const std::vector<Real>* scales  = massScales(*scene);
 	scene->forces.sync();
 	corrections.clear();
 	Energies e;
@@ -49,7 +48,8 @@ void BlockStrainIntegrator::action()
 			                         "has a DeformableState but is not a Polygon2D block of an RbsmMat: it cannot deform (give it a plain State)");
 			continue;
 		}
-		const Real torque = stepBlock(*b, *ds, *poly, *mat, b->state->isDamped ? damping : 0, massScaleOf(*scene, b->id), e);
+		const Real scale  = scales && size_t(b->id) < scales->size() ? (*scales)[size_t(b->id)] : 1;
+		const Real torque = stepBlock(*b, *ds, *poly, *mat, b->state->isDamped ? damping : 0, scale, e);
 		corrections.push_back({ b->id, torque - scene->forces.getTorque(b->id).z() });
 	}
 	for (const Torque& t : corrections) // (after the pass: an addTorque unsyncs the container)
