@@ -2,6 +2,7 @@
 // stays below the exact omega^2, is exact for one free block, reduces to the block's own strain
 // modes without contacts, and leaves the rigid (3-DOF) numbers bit-for-bit unchanged.
 #include <pkg/rbsm/kernel/CriticalTimeStep.hpp>
+#include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/kernel/StrainElement.hpp>
 
 #include <gtest/gtest.h>
@@ -29,13 +30,8 @@ std::vector<Vec2> randomPolygon(std::mt19937& rng, Real size)
 		const Real a = 2 * M_PI * (i + 0.7 * u(rng)) / k;
 		v.emplace_back(size * std::cos(a), aspect * size * std::sin(a));
 	}
-	Real A = 0;
-	Vec2 c = Vec2::Zero();
-	for (size_t i = 0; i < v.size(); ++i) {
-		const Vec2 &p = v[i], &q = v[(i + 1) % v.size()];
-		A += cross2(p, q) / 2, c += cross2(p, q) * (p + q) / 6;
-	}
-	for (auto& p : v) p -= c / A;
+	const Vec2 c = massProperties(v).centroid; // (the kernel's shoelace formulas)
+	for (auto& p : v) p -= c;
 	return v;
 }
 std::vector<Vec2> square(Real h) { return { Vec2(-h / 2, -h / 2), Vec2(h / 2, -h / 2), Vec2(h / 2, h / 2), Vec2(-h / 2, h / 2) }; }

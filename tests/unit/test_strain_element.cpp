@@ -1,5 +1,6 @@
 // The deformable block's constant-strain element: polygon moments against closed forms, its mass
 // against quadrature, the patch identity of its strain load, and its own strain frequencies.
+#include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/kernel/StrainElement.hpp>
 
 #include <gtest/gtest.h>
@@ -21,13 +22,8 @@ std::vector<Vec2> rectangle(Real a, Real b)
 std::vector<Vec2> pentagon()
 {
 	std::vector<Vec2> v = { Vec2(0.1, -0.3), Vec2(1.2, 0.0), Vec2(1.4, 0.9), Vec2(0.5, 1.3), Vec2(-0.2, 0.6) };
-	Real              A = 0;
-	Vec2              c = Vec2::Zero();
-	for (size_t i = 0; i < v.size(); ++i) {
-		const Vec2 &p = v[i], &q = v[(i + 1) % v.size()];
-		A += cross2(p, q) / 2, c += cross2(p, q) * (p + q) / 6;
-	}
-	for (auto& p : v) p -= c / A;
+	const Vec2 c = massProperties(v).centroid; // (the kernel's shoelace formulas)
+	for (auto& p : v) p -= c;
 	return v;
 }
 Mat4 fullMass(const StrainMass& M)
