@@ -1,6 +1,7 @@
 #include <core/Omega.hpp>
 #include <pkg/rbsm/BlockStateCheck.hpp>
 #include <pkg/rbsm/DeformableState.hpp>
+#include <pkg/rbsm/DistributedRun.hpp>
 #include <pkg/rbsm/Ip2_RbsmMat_RbsmMat_RbsmPhys.hpp>
 #include <pkg/rbsm/MemoryOrder.hpp>
 #include <pkg/rbsm/Polygon2D.hpp>
@@ -224,13 +225,6 @@ bool RbsmTimeStepper::jointDashpots(const Interaction& I, const rbsm::DynContact
 	return true;
 }
 
-// Under yade.mpy a worker (Scene.subdomain > 0) holds its own blocks and copies of its neighbours'
-// blocks near its border; NewtonIntegrator moves only its own, and only they have all their joints on
-// this rank (a copy's joints with blocks this rank does not hold are computed elsewhere). So the step
-// and the motion checks are taken over its own blocks: the union over the ranks is the serial scene.
-// The master (subdomain 0) and a serial or merged scene own every block.
-[[gnu::always_inline]] inline bool RbsmTimeStepper::ownedHere(const Body& b) const { return scene->subdomain == 0 || b.subdomain == scene->subdomain; }
-
 void RbsmTimeStepper::boundsHold(size_t nBodies)
 {
 	if (rowBounds.size() < kRow * nBodies) rowBounds.resize(kRow * nBodies, 0);
@@ -292,7 +286,7 @@ Real RbsmTimeStepper::estimate()
 		rowBounds[kRow * id] = omega2[b];
 		if (nDashpots > 0) rowBounds[kRow * id + 1] = lambdaC[b];
 		if (densityScaling) rowDiag[id] = diag2[b];
-		if (!ownedHere(*bodies[id])) continue;
+		if (!ownedHere(*scene, *bodies[id])) continue;
 		const Real dt = blockDt(id);
 		if (dt < criticalDt) criticalDt = dt, criticalBody = int(id);
 	}
@@ -323,7 +317,7 @@ void RbsmTimeStepper::addJointsMadeThisStep()
 				rowDiag[id] += diag[side];
 				raiseMassScale(size_t(id), massScaleOf(size_t(id)));
 			}
-			if (!ownedHere(*bodies[id])) continue;
+			if (!ownedHere(*scene, *bodies[id])) continue;
 			const Real dt = blockDt(size_t(id));
 			if (dt < criticalDt || !(criticalDt < inf)) {
 				if (dt < inf) criticalDt = dt, criticalBody = id;
@@ -386,7 +380,7 @@ Real RbsmTimeStepper::firstContactEstimate()
 		const State& s = *scene->bodies->body[size_t(k.id)]->state;
 		// a block with joints is bounded by them (a bonded sliver is not assumed to meet another
 		// sliver); a joint it makes later is added at the step it is made
-		if (fixedBlock(s) || !ownedHere(*scene->bodies->body[size_t(k.id)]) || (size_t(kRow * k.id) < rowBounds.size() && rowBounds[kRow * k.id] > 0))
+		if (fixedBlock(s) || !ownedHere(*scene, *scene->bodies->body[size_t(k.id)]) || (size_t(kRow * k.id) < rowBounds.size() && rowBounds[kRow * k.id] > 0))
 			continue;
 		const Real partnerN = bestN[0].id != k.id ? bestN[0].value : bestN[1].value;
 		const Real partnerS = bestS[0].id != k.id ? bestS[0].value : bestS[1].value;
@@ -413,14 +407,12 @@ void RbsmTimeStepper::fullCheck()
 	newtonDamping  = std::isfinite(d) && d > 0 ? d : 0; // (read first: the estimate asks whether impacts matter)
 	estimate();
 	firstContactDt = firstContactEstimate();
-	newtonGravityRead = false; // read again by the next applyMassScale
+	densityScale.readGravityAgain(); // NewtonIntegrator.gravity, once per full estimate
 	if (densityScaling) scaleMasses();
 }
 
-// Density scaling (quasi-static stages): every block whose own stable step is below the target gets
-// its inertia scaled by massScale = s >= 1 (rbsm::densityScale: its Gershgorin row then allows the
-// target whichever neighbours are scaled), so that all run at the target step. Its joint dashpots keep
-// the factor of its unscaled step (smaller ω: a smaller damping ratio and a larger factor).
+// Density scaling (quasi-static stages, DensityScaling.hpp): every block whose own stable step is below
+// the common one (targetDt, or the median block's) gets its inertia scaled so that all run at it.
 void RbsmTimeStepper::scaleMasses()
 {
 	const auto& bodies = scene->bodies->body;
@@ -434,45 +426,27 @@ void RbsmTimeStepper::scaleMasses()
 	// a corner: 0.15 s), at which the others, still falling, passed through their neighbours
 	for (Real w2 : firstOmega2)
 		own.push_back(firstContactSafety() * 2 / std::sqrt(w2) / std::sqrt(1 + newtonDamping));
-	if (own.empty()) {
-		scaledDt = std::numeric_limits<Real>::infinity();
-		return;
-	}
-	std::nth_element(own.begin(), own.begin() + own.size() / 2, own.end());
-	scaledDt = targetDt > 0 ? targetDt : own[own.size() / 2];
+	scaledDt = DensityScaling::commonStep(own, targetDt);
+	if (own.empty()) return;
 	for (size_t id = 0; id < bodies.size() && kRow * id < rowBounds.size(); id++)
 		massScale[id] = massScaleOf(id);
 }
 
-// Sets body id's scale to s where a joint is made. A rise from s0 to s slows the block's free velocities
-// by √(s0/s), which keeps its kinetic energy ½ s m v² of the scaled motion: a block keeping its velocity
-// while it was made s/s0 times heavier (a falling block scaled at its first joint) carried s/s0 times its
-// energy into its joints, and a later fall of its scale (its joints open, a full estimate) released that
-// energy, stored in a joint pressed deep, into the light block (a 3 cm block thrown at 8.8 m/s). Not at
-// the full estimates: there the scales of sliding blocks go up and down by a few per cent, and slowing
-// at every rise damped the runaway of failing strength-reduction trials (1200 blocks: 2.54x -> 1.68x).
+// Sets body id's scale to s where a joint is made, slowing the block if it rises. Not at the full
+// estimates: there the scales of sliding blocks go up and down by a few per cent, and slowing at every
+// rise damped the runaway of failing strength-reduction trials (1200 blocks: 2.54x -> 1.68x).
 void RbsmTimeStepper::raiseMassScale(size_t id, Real s)
 {
 	const Real s0 = massScale[id];
 	massScale[id] = s;
 	const auto& bodies = scene->bodies->body;
-	if (!(s > s0 && s0 > 0) || id >= bodies.size() || !bodies[id] || !bodies[id]->state) return;
-	State&     st = *bodies[id]->state;
-	const Real k  = std::sqrt(s0 / s);
-	for (int i = 0; i < 3; i++) {
-		if (!(st.blockedDOFs & (1u << i))) st.vel[i] *= k; // DOF_X, _Y, _Z (a prescribed velocity stays)
-		if (!(st.blockedDOFs & (8u << i))) st.angVel[i] *= k; // DOF_RX, _RY, _RZ
-	}
+	if (id < bodies.size() && bodies[id] && bodies[id]->state) DensityScaling::slowOnRise(*bodies[id]->state, s0, s);
 }
 
 // The scale that lets body id's rows (rowBounds, rowDiag) run at scaledDt.
 Real RbsmTimeStepper::massScaleOf(size_t id) const
 {
-	const Real w2 = rowBounds[kRow * id];
-	if (!(w2 > 0)) return 1;
-	const Real damped = blockDt(id) * std::sqrt(w2) / 2; // the dashpots' factor on 2/ω
-	const Real wT     = 2 * safetyFactor * damped / (scaledDt * std::sqrt(1 + newtonDamping));
-	return rbsm::densityScale(rowDiag[id], w2 - rowDiag[id], wT * wT);
+	return DensityScaling::scaleFor(rowBounds[kRow * id], rowDiag[id], blockDt(id), scaledDt, safetyFactor, newtonDamping);
 }
 
 // Density scaling with the rows of a full estimate (saved with the scene; a file of an older build
@@ -483,29 +457,6 @@ bool RbsmTimeStepper::scalesHold(size_t nBodies)
 	if (rowDiag.size() < nBodies) rowDiag.resize(nBodies, 0);
 	if (massScale.size() < nBodies) massScale.resize(nBodies, 1);
 	return true;
-}
-
-// The scaled blocks' accelerations: NewtonIntegrator divides force + m g by m; adding (1/s − 1) of
-// it (and of the torque) makes that (force + m g)/(s m). Equilibrium (zero force) is unchanged.
-void RbsmTimeStepper::applyMassScale()
-{
-	if (!newtonGravityRead) { // once per full estimate (and after a load), not at every step
-		const Vector3r g  = newtonAttribute<Vector3r>(*scene, "gravity", Vector3r::Zero());
-		newtonGravity     = g.allFinite() ? g : Vector3r::Zero();
-		newtonGravityRead = true;
-	}
-	const Vector3r& g = newtonGravity;
-	scene->forces.sync();
-	scaledLoads.clear(); // read all first: an addForce unsyncs the container
-	for (const auto& b : scene->bodies->body) {
-		if (!b || size_t(b->id) >= massScale.size() || !(massScale[b->id] > 1)) continue;
-		const Real k = 1 / massScale[b->id] - 1;
-		scaledLoads.push_back({ b->id, k * (scene->forces.getForce(b->id) + b->state->mass * g), k * scene->forces.getTorque(b->id) });
-	}
-	for (const ScaledLoad& l : scaledLoads) {
-		scene->forces.addForce(l.id, l.force);
-		scene->forces.addTorque(l.id, l.torque);
-	}
 }
 
 void RbsmTimeStepper::reportMotion(const Body& b, Real motion, Real r)
@@ -532,7 +483,7 @@ void RbsmTimeStepper::reportMotion(const Body& b, Real motion, Real r)
 [[gnu::always_inline]] inline void RbsmTimeStepper::watchBody(const Body& b, Real& travelDt, bool& runCollider)
 {
 	const Polygon2D* poly = polygonOf(b);
-	if (!poly || !ownedHere(b)) return;
+	if (!poly || !ownedHere(*scene, b)) return;
 	if (b.bound) motionWatch.keepBoundAhead(*scene, b, *poly, runCollider);
 	Real motion, r;
 	if (maxStepMotion > 0 && !fixedBlock(*b.state) && motionWatch.movesTooFar(*scene, b, *poly, maxStepMotion, travelDt, motion, r)) reportMotion(b, motion, r);
@@ -583,65 +534,42 @@ void RbsmTimeStepper::takeScriptDt()
 
 long RbsmTimeStepper::jointEdits() { return RbsmPhys::edits.load(std::memory_order_relaxed); }
 
-// A refused step: thrown, or under yade.mpy (deferErrors) kept for the sync engine that follows, which
-// stops every rank before NewtonIntegrator (a throw here would stop this rank alone and leave the others
-// waiting for it in their next exchange).
-void RbsmTimeStepper::refuse(const std::string& message)
+// One pass over the bodies at every step, on this thread (at 10⁵ blocks a pass streams every Body,
+// State, Shape and Bound from memory: two passes cost 39 ns per contact-step, one 29 ns).
+// - issue 15: a reshaped block gets the mass of its new shape, and a mass or inertia set by a
+//   script, or a block fixed or released, is seen (ReshapedBlocks.hpp); a block whose state the
+//   model cannot integrate is reported by id and the run stops after this step (BlockStateCheck.hpp),
+//   without the estimate that follows, which would throw without naming the body: false then.
+// - watchBody (unless watchLater): the collider trigger and the motion check, which read the velocities.
+bool RbsmTimeStepper::checkBlocks(bool watchLater, Real& travelDt, bool& runCollider)
 {
-	if (!deferErrors) throw std::runtime_error(message);
-	error = message;
+	bool bad = false;
+	reshapedIds.clear();
+	for (const auto& b : scene->bodies->body) {
+		if (!b) continue;
+		const bool changed = followReshape(*b, *scene->bodies);
+		if (!(b->state && blockStateSurelyFine(*b->state))) { // (the usual block, without a call)
+			const std::string problem = blockStateProblem(*b);
+			if (!problem.empty()) {
+				rbsm_report::stopForBody(blockStateReports, *scene, "RbsmTimeStepper", b->id, problem);
+				bad = true;
+				continue;
+			}
+		}
+		if (changed) reshapedIds.push_back(b->id);
+		else if (!watchLater) watchBody(*b, travelDt, runCollider);
+	}
+	// a lighter block may need a shorter step now, its joints were made anew (their phys again,
+	// without a new iterMadeReal) and its inner radius changed: a full estimate now (a mass set by
+	// hand: 0.1 x mid-interval tore a bonded joint before the next estimate)
+	if (!bad && !reshapedIds.empty()) lastCheck = -1;
+	return !bad;
 }
 
-void RbsmTimeStepper::action()
+// A full estimate every interval steps and whenever what it read has changed; in between, the joints
+// made (jointsMade moved from jointsSeen) are added to the bounds at this step.
+void RbsmTimeStepper::updateBounds(long made)
 {
-	if (!error.empty()) { // a deferred refusal that no sync engine took: the step it refused has run
-		std::string message;
-		std::swap(message, error);
-		throw std::runtime_error(message + " [deferErrors is set but no yade_rbsm.mpi sync engine follows RbsmTimeStepper: use yade_rbsm.engines(mpi=True)]");
-	}
-	stepDt = std::numeric_limits<Real>::infinity();
-	takeScriptDt();
-	// in every step: the one serial place of an RBSM step that sees a VTKRecorder added to O.engines
-	// (first: also in a step that a bad block below ends early, since the recorder would still run)
-	vtkRecorderGuard.check(*scene);
-	// One pass over the bodies at every step, on this thread (at 10⁵ blocks a pass streams every Body,
-	// State, Shape and Bound from memory: two passes cost 39 ns per contact-step, one 29 ns).
-	// - issue 15: a reshaped block gets the mass of its new shape, and a mass or inertia set by a
-	//   script, or a block fixed or released, is seen (ReshapedBlocks.hpp); a block whose state the
-	//   model cannot integrate is reported by id and the run stops after this step (BlockStateCheck.hpp),
-	//   without the estimate below, which would throw without naming the body.
-	// - watchBody: the collider trigger and the motion check, which read the velocities. Joints made
-	//   under density scaling slow their blocks (raiseMassScale): the watch then follows them. A
-	//   reshaped block is watched after the full estimate it causes (its inner radius changes).
-	const auto& bodies = scene->bodies->body;
-	motionWatch.grow(bodies.size());
-	const long made        = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
-	const bool watchLater  = densityScaling && made != jointsSeen;
-	Real       travelDt    = std::numeric_limits<Real>::infinity();
-	bool       runCollider = false;
-	{
-		bool bad = false;
-		reshapedIds.clear();
-		for (const auto& b : bodies) {
-			if (!b) continue;
-			const bool changed = followReshape(*b, *scene->bodies);
-			if (!(b->state && blockStateSurelyFine(*b->state))) { // (the usual block, without a call)
-				const std::string problem = blockStateProblem(*b);
-				if (!problem.empty()) {
-					rbsm_report::stopForBody(blockStateReports, *scene, "RbsmTimeStepper", b->id, problem);
-					bad = true;
-					continue;
-				}
-			}
-			if (changed) reshapedIds.push_back(b->id);
-			else if (!watchLater) watchBody(*b, travelDt, runCollider);
-		}
-		if (bad) return;
-		// a lighter block may need a shorter step now, its joints were made anew (their phys
-		// again, without a new iterMadeReal) and its inner radius changed: a full estimate now
-		// (a mass set by hand: 0.1 x mid-interval tore a bonded joint before the next estimate)
-		if (!reshapedIds.empty()) lastCheck = -1;
-	}
 	// (iter < lastCheck: O.iter was set back, e.g. a scene saved by a later run: estimate now)
 	if (densityScaling != massScaled) lastCheck = -1, massScaled = densityScaling; // switched: estimate now
 	if (densityScaling && targetDt != scaledTarget) lastCheck = -1;                 // a new target: estimate now
@@ -656,22 +584,19 @@ void RbsmTimeStepper::action()
 	// full estimate (a scene saved by an older build), an estimate now
 	else if (made != jointsSeen) densityScaling && !scalesHold(scene->bodies->body.size()) ? fullCheck() : addJointsMadeThisStep();
 	jointsSeen = made;
-	if (watchLater)
-		for (const auto& b : bodies) {
-			if (b) watchBody(*b, travelDt, runCollider);
-		}
-	else
-		for (const Body::id_t id : reshapedIds) watchBody(*bodies[size_t(id)], travelDt, runCollider);
-	if (runCollider) scene->doSort = true;
-	if (densityScaling) applyMassScale();
+}
 
+// O.dt: the stable step (or less, for travelDt and maxDt) with setDt; otherwise the script's, refused
+// above the stable one.
+void RbsmTimeStepper::chooseStep(Real travelDt)
+{
 	const Real limit = stableDt();
 	std::ostringstream msg;
 	msg << "RbsmTimeStepper: ";
 	if (std::isnan(limit) || limit <= 0) {
 		msg << "the stable time step is " << limit << " s at step " << scene->iter << " (joints of body #" << criticalBody
 		    << "): a joint is infinitely stiff or damped (Poisson's ratio at 0.5 in plane strain? dampingRatio?); the step was refused.";
-		return refuse(msg.str());
+		return refuseStep(msg.str(), deferErrors, error);
 	}
 	// The travel limit never takes the step below a tenth of the stable one: a block exploding
 	// (thrown at km/s) is reported by the motion watch, not run in slow motion.
@@ -682,7 +607,7 @@ void RbsmTimeStepper::action()
 	}
 	if (!(scene->dt > 0)) {
 		msg << "O.dt = " << scene->dt << " s at step " << scene->iter << ": time would not advance; the step was refused. Set O.dt > 0 or RbsmTimeStepper.setDt=True.";
-		return refuse(msg.str());
+		return refuseStep(msg.str(), deferErrors, error);
 	}
 	// The estimate moves with the geometry by round-off from one step to the next: a step set to
 	// the stable step must not be refused for that (the safety factor is the margin).
@@ -693,7 +618,37 @@ void RbsmTimeStepper::action()
 	msg << " = " << limit << " s; "
 	    << (criticalDt <= firstContactDt ? "the joints of body #" + std::to_string(criticalBody) : std::string("the first contact a block can form"))
 	    << "); the step was refused before integration. Reduce O.dt or set RbsmTimeStepper.setDt=True.";
-	refuse(msg.str());
+	refuseStep(msg.str(), deferErrors, error);
+}
+
+// Under yade.mpy (deferErrors) a refusal of the last step that no sync engine took is thrown first
+// (DistributedRun.hpp). Joints made under density scaling slow their blocks (raiseMassScale): the motion
+// watch then follows the estimate, as it does for reshaped blocks (their inner radius changes).
+void RbsmTimeStepper::action()
+{
+	throwUnclaimedRefusal(error);
+	stepDt = std::numeric_limits<Real>::infinity();
+	takeScriptDt();
+	// in every step: the one serial place of an RBSM step that sees a VTKRecorder added to O.engines
+	// (first: also in a step that a bad block below ends early, since the recorder would still run)
+	vtkRecorderGuard.check(*scene);
+	const auto& bodies = scene->bodies->body;
+	motionWatch.grow(bodies.size());
+	const long made        = Ip2_RbsmMat_RbsmMat_RbsmPhys::jointsMade.load(std::memory_order_relaxed);
+	const bool watchLater  = densityScaling && made != jointsSeen;
+	Real       travelDt    = std::numeric_limits<Real>::infinity();
+	bool       runCollider = false;
+	if (!checkBlocks(watchLater, travelDt, runCollider)) return;
+	updateBounds(made);
+	if (watchLater)
+		for (const auto& b : bodies) {
+			if (b) watchBody(*b, travelDt, runCollider);
+		}
+	else
+		for (const Body::id_t id : reshapedIds) watchBody(*bodies[size_t(id)], travelDt, runCollider);
+	if (runCollider) scene->doSort = true;
+	if (densityScaling) densityScale.applyTo(*scene, massScale);
+	chooseStep(travelDt);
 }
 
 } // namespace yade

@@ -2,6 +2,7 @@
 #pragma once
 #include <core/GlobalEngine.hpp>
 #include <pkg/rbsm/BlockMotionWatch.hpp>
+#include <pkg/rbsm/DensityScaling.hpp>
 #include <pkg/rbsm/VtkRecorderGuard.hpp>
 #include <pkg/rbsm/kernel/CriticalTimeStep.hpp>
 
@@ -111,11 +112,13 @@ private:
 	inline void watchBody(const Body& b, Real& travelDt, bool& runCollider); // the motion watch of one block
 	void        takeScriptDt(); // an O.dt set from outside since this engine set it: setDt off
 	void        reportMotion(const Body& b, Real motion, Real r); // (the rare path, out of the loop)
+	bool checkBlocks(bool watchLater, Real& travelDt, bool& runCollider); // the pass over the bodies; false: a bad block, the run stops
+	void updateBounds(long made);
+	void chooseStep(Real travelDt);
 	void scaleMasses();
 	Real massScaleOf(size_t id) const;
 	void raiseMassScale(size_t id, Real s);
 	bool scalesHold(size_t nBodies);
-	void applyMassScale();
 	template <class Keep> const std::vector<const Interaction*>& jointsByIds(Keep keep);
 	Real firstContactEstimate(); // (also fills firstOmega2)
 	bool jointAsDynContact(const Interaction& I, int body1, int body2, rbsm::DynContact& c) const;
@@ -124,8 +127,6 @@ private:
 	bool impactsMatter() const;
 	Real firstContactSafety() const;
 	Real blockDt(size_t id) const; // damped step of body id's rows (rowBounds)
-	inline bool ownedHere(const Body& b) const; // the block is integrated on this rank (always true outside yade.mpy's workers)
-	void refuse(const std::string& message);
 	void boundsHold(size_t nBodies);
 	// estimate()'s working arrays, kept between calls so that a check allocates nothing once the
 	// scene has grown (not saved; the engine runs on one thread)
@@ -138,13 +139,7 @@ private:
 	long                          editsSeen  = -1; // RbsmPhys::edits at the last step (a joint's kn, ks set from Python since: a full estimate)
 	static long                   jointEdits();
 	std::vector<const Interaction*> sortedJoints; // jointsByIds' result
-	struct ScaledLoad {
-		Body::id_t id;
-		Vector3r   force, torque;
-	};
-	std::vector<ScaledLoad>         scaledLoads;  // applyMassScale's corrections of this step
-	Vector3r                        newtonGravity     = Vector3r::Zero(); // NewtonIntegrator.gravity, read once per full estimate (densityScaling)
-	bool                            newtonGravityRead = false;
+	DensityScaling                  densityScale; // applies the scales, with its own working arrays
 	BlockMotionWatch                motionWatch; // the collider trigger and the motion check of every block (and its inner radius)
 	std::vector<Body::id_t> reshapedIds; // this step's reshaped blocks, watched after the full estimate
 };

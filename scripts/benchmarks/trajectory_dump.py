@@ -1,5 +1,5 @@
-"""Bit-identity check for refactors (issue 20): five short scenes (random piles with exact and frozen
-kinematics, a brick slope like landslide_slope.py's, a rocking block, spheres behind a block wall), every
+"""Bit-identity check for refactors (issue 20): seven short scenes (random piles with exact and frozen
+kinematics, one under density scaling, one of deformable blocks, a brick slope like landslide_slope.py's, a rocking block, spheres behind a block wall), every
 100 steps every body's pos/ori/vel/angVel and every joint's forces and segment with repr() (17 digits).
 Run before and after a change and cmp the two files:
     build/yade-rbsm -n -x scripts/benchmarks/trajectory_dump.py /tmp/before.txt
@@ -24,10 +24,10 @@ def dump(tag):
             line += " %r %r %r %r %r %r" % (p.normalForce[0], p.normalForce[1], p.normalForce[2], p.shearForce[0], p.shearForce[1], p.shearForce[2])
         out.write(line + "\n")
 
-def random_pile(seed, n, tol, steps):
+def random_pile(seed, n, tol, steps, density_scaling=False, deformable=False):
     O.reset()
     rng = random.Random(seed)
-    rock = RbsmMat(young=1e7, poisson=0.2, density=2500, frictionAngle=math.radians(30), cohesion=0, tensileStrength=0)
+    rock = RbsmMat(young=1e7, poisson=0.2, density=2500, frictionAngle=math.radians(30), cohesion=0, tensileStrength=0, deformable=deformable)
     O.materials.append(rock)
     def convex(size):
         nv = rng.randint(3, 9); aspect = rng.uniform(1, 4); a, b = size / 2, size / 2 / aspect
@@ -53,9 +53,11 @@ def random_pile(seed, n, tol, steps):
         b = polygon2d(poly, rock)
         b.state.vel = (rng.uniform(-1, 1), rng.uniform(-1, 1), 0); b.state.angVel = (0, 0, rng.uniform(-3, 3))
         O.bodies.append(b)
-    O.engines = engines(update_tolerance=tol, contact_damping=0.05)
+    O.engines = engines(update_tolerance=tol, contact_damping=0.05, damping=0.3 if density_scaling else 0.0)
+    timeStepper = [e for e in O.engines if type(e).__name__ == "RbsmTimeStepper"][0]
+    timeStepper.densityScaling = density_scaling
     for k in range(steps // 100):
-        O.run(100, True); dump("pile seed %d tol %g" % (seed, tol))
+        O.run(100, True); dump("pile seed %d tol %g%s%s" % (seed, tol, " densityScaling" if density_scaling else "", " deformable" if deformable else ""))
 
 def landslide(steps):
     O.reset()
@@ -106,5 +108,7 @@ random_pile(2, 60, 1e-4, 600)
 landslide(400)
 rocking(500)
 mixed(400)
+random_pile(4, 60, 0.0, 800, density_scaling=True)
+random_pile(5, 60, 0.0, 600, deformable=True)
 out.close()
 print("TRAJECTORY DONE")

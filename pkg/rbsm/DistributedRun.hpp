@@ -1,0 +1,37 @@
+// DistributedRun: what RbsmTimeStepper does differently under yade.mpy: it bounds and watches only the
+// blocks its rank owns, and keeps a refused step for the sync engine instead of throwing it.
+#pragma once
+#include <core/Body.hpp>
+#include <core/Scene.hpp>
+
+#include <stdexcept>
+#include <string>
+
+namespace yade {
+
+// A worker (Scene.subdomain > 0) holds its own blocks and copies of its neighbours' blocks near its
+// border; NewtonIntegrator moves only its own, and only they have all their joints on this rank (a
+// copy's joints with blocks this rank does not hold are computed elsewhere). So the step and the motion
+// checks are taken over its own blocks: the union over the ranks is the serial scene. The master
+// (subdomain 0) and a serial or merged scene own every block.
+[[gnu::always_inline]] inline bool ownedHere(const Scene& scene, const Body& b) { return scene.subdomain == 0 || b.subdomain == scene.subdomain; }
+
+// A refused step: thrown, or with deferErrors kept in `kept` for the sync engine that follows, which
+// stops every rank before NewtonIntegrator (a throw here would stop this rank alone and leave the others
+// waiting for it in their next exchange).
+inline void refuseStep(const std::string& message, bool deferErrors, std::string& kept)
+{
+	if (!deferErrors) throw std::runtime_error(message);
+	kept = message;
+}
+
+// A refusal still kept at the next step: no sync engine took it, and the step it refused has run.
+inline void throwUnclaimedRefusal(std::string& kept)
+{
+	if (kept.empty()) return;
+	std::string message;
+	std::swap(message, kept);
+	throw std::runtime_error(message + " [deferErrors is set but no yade_rbsm.mpi sync engine follows RbsmTimeStepper: use yade_rbsm.engines(mpi=True)]");
+}
+
+} // namespace yade
