@@ -87,6 +87,8 @@ void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shar
 	p->ductile         = m1.ductile && m2.ductile;
 	// the as-built joints of a deformable continuum are its cuts, welded; any other joint is a discontinuity
 	p->welded = bonded && m1.deformable && m2.deformable;
+	// its mean jump takes the penalty, its bending (the jump's linear part) Kawai's springs of the materials
+	if (p->welded && p->kn > 0) p->linearShare = std::min<Real>(1, rbsm::kawaiSpringsTwoMaterials(m1.young, m1.poisson, g->h1, m2.young, m2.poisson, g->h2, plane).kn / p->kn);
 	p->initPoints(g->nPoints(), p->welded || (bonded && (p->cohesion > 0 || p->tensileStrength > 0)));
 	I->phys = p;
 }
@@ -157,6 +159,8 @@ void RbsmPhys::postLoad(RbsmPhys& self)
 {
 	for (const auto& [name, v] : { std::pair<const char*, Real> { "kn", kn }, { "ks", ks }, { "cohesion", cohesion }, { "tanPhi", tanPhi }, { "tensileStrength", tensileStrength } })
 		checkValue(name, v);
+	if (!(linearShare > 0 && linearShare <= 1)) // (its square root divides the welded points' tractions)
+		throw std::invalid_argument("RbsmPhys.linearShare: must be in (0, 1] (got " + std::to_string(linearShare) + ")");
 	const size_t sizes[] = { shearTraction.size(), normalTraction.size(), intact.size(), slipping.size(), open.size() };
 	const size_t n       = *std::max_element(std::begin(sizes), std::end(sizes));
 	if (n == 0) { // not a load

@@ -202,6 +202,56 @@ namespace {
 }
 
 namespace {
+	// A welded joint (a cut of a continuum between two deformable blocks): the penalty acts on the mean of
+	// the jump along the segment, and linearShare of it on the jump's linear part. Its points see the mean
+	// plus b = √linearShare times their deviation from it, and return their forces through the transpose
+	// of that map: the joint stores ½ Σ k a (δ̄² + b² (δ_k − δ̄)²) and its forces are that energy's gradient.
+	// The points keep the tractions they apply (what joint_table and block stresses read): their springs'
+	// own, τ̄ + (τ − τ̄)/b, are taken back before the update.
+	// (Why: a linear jump penalised at every edge of a Voronoi cell over-constrains the cells' linear
+	// fields, which then lock in any field but a uniform one: a Brazilian disc's centre carried 0.28 of its
+	// tension, tests/deformable/test_disc.py.)
+	void addWeldedPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n, JointSums& sum)
+	{
+		constexpr int          N   = rbsm::kMaxIntegrationPoints;
+		RbsmPhys::Point* const pts = p.pointData();
+		const Real             b   = std::sqrt(p.linearShare);
+		Real                   w[N], dn[N], vn[N], vs[N], mean[4] = { 0, 0, 0, 0 }; // means of δn, vn, vs and the applied τ
+		for (int k = 0; k < n; k++) {
+			const Real     s = g.rule->s[k];
+			const Vector2r v = j.kin.velocity(s);
+			w[k]             = g.rule->w[k];
+			dn[k]            = j.kin.overlap(s);
+			vn[k]            = -v.dot(g.normal);
+			vs[k]            = v.dot(j.tangent);
+			mean[0] += w[k] * dn[k], mean[1] += w[k] * vn[k], mean[2] += w[k] * vs[k], mean[3] += w[k] * pts[k].joint.shearTraction;
+		}
+		auto toPoint = [b](Real x, Real m) { return m + b * (x - m); };
+		rbsm::JointPointResult r[N];
+		Real                   fMean[2] = { 0, 0 }, cMean[2] = { 0, 0 }, cn[N] = {}, cs[N] = {}; // spring and dashpot tractions
+		for (int k = 0; k < n; k++) {
+			pts[k].joint.shearTraction = mean[3] + (pts[k].joint.shearTraction - mean[3]) / b;
+			r[k] = rbsm::updateJointPoint(pts[k].joint, j.params, toPoint(dn[k], mean[0]), toPoint(vs[k], mean[2]) * j.dt, w[k] * j.area, j.trackEnergy);
+			if (j.damped) {
+				cn[k] = p.dampingCoefficient * toPoint(vn[k], mean[1]);
+				cs[k] = -p.dampingCoefficient * toPoint(vs[k], mean[2]);
+				sum.viscous += (cn[k] * toPoint(vn[k], mean[1]) - cs[k] * toPoint(vs[k], mean[2])) * w[k] * j.area * j.dt;
+			}
+			fMean[0] += w[k] * r[k].normalTraction, fMean[1] += w[k] * r[k].shearTraction;
+			cMean[0] += w[k] * cn[k], cMean[1] += w[k] * cs[k];
+		}
+		for (int k = 0; k < n; k++) {
+			const Real sn = toPoint(r[k].normalTraction, fMean[0]), tau = toPoint(r[k].shearTraction, fMean[1]);
+			pts[k].normalTraction      = sn;
+			pts[k].joint.shearTraction = tau;
+			const Real a = w[k] * j.area;
+			addToSums(g, j, g.rule->s[k], (sn + toPoint(cn[k], cMean[0])) * a, (tau + toPoint(cs[k], cMean[1])) * a, r[k], false,
+			          std::numeric_limits<Real>::infinity(), sum); // (welded: unlimited)
+		}
+	}
+}
+
+namespace {
 	// The height of the phreatic polyline (x strictly increasing) at x, level beyond its ends.
 	Real phreaticHeight(const std::vector<Vector2r>& line, Real x)
 	{
@@ -289,6 +339,8 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		if (n <= RbsmPhys::kInlinePoints) addFrictionalPoints<RbsmPhys::kInlinePoints>(g, p, j, n, sum);
 		else addFrictionalPoints<rbsm::kMaxIntegrationPoints>(g, p, j, n, sum);
 	}
+	else if (p.welded && p.linearShare < 1)
+		addWeldedPoints(g, p, j, n, sum);
 	else
 		for (int k = 0; k < n; k++)
 			addPoint(g, p, j, k, sum);

@@ -5,7 +5,14 @@ size each gets. Prints the time per contact-step (least of --repeats windows, th
 one process: A B A B, each built and settled for 200 steps anew), their ratio, the ratio of their steps O.dt, and so the cost of a simulated second.
 
     build/yade-rbsm -j1 -n -x scripts/benchmarks/deformable_cost.py [--n 400] [--steps 300] [--repeats 5]
+
+Instructions instead of time (--callgrind KIND, KIND rigid or deformable: 100 steps of one plate counted under
+`valgrind --tool=callgrind --instr-atstart=no`; the total over contacts x steps is the count per contact-step):
+    YADE_PREFIX=build/yade-prefix PYTHONPATH=py:build/python valgrind --tool=callgrind --instr-atstart=no \
+        /usr/bin/yade -j1 -n -x scripts/benchmarks/deformable_cost.py --callgrind deformable
 """
+import os
+import subprocess
 import sys
 import time
 
@@ -47,6 +54,14 @@ def window(tag):
     O.run(STEPS, True)
     return (time.perf_counter() - t0) / (STEPS * contacts) * 1e9, O.dt, contacts
 
+
+if "--callgrind" in sys.argv:
+    build(arg("--callgrind", "rigid") == "deformable")
+    subprocess.run(["callgrind_control", "-i", "on", str(os.getpid())], stdout=subprocess.DEVNULL, check=True)
+    O.run(100, True)  # (one full estimate of the time stepper, as in every 100 steps)
+    subprocess.run(["callgrind_control", "-i", "off", str(os.getpid())], stdout=subprocess.DEVNULL, check=True)
+    print("CALLGRIND_WINDOW mode %s contacts %d steps %d" % (arg("--callgrind", "rigid"), O.interactions.countReal(), 100), flush=True)
+    sys.exit(0)
 
 tags = ["rigid", "deformable"]
 best = {t: (float("inf"), 0, 0) for t in tags}

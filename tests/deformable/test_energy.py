@@ -31,6 +31,16 @@ def test_undamped_deformable_blocks_conserve_energy(size, seed):
     assert e["strainElastic"] > 0.01 * total and e["strainKinetic"] > 0.01 * total
 
 
+def test_joint_dashpots_close_the_balance():
+    """The welded joints' dashpots (contact_damping) act on the same mean and bending of the jump as their springs
+    (RbsmPhys.linearShare): what they take is in viscDamp, and the balance still closes."""
+    r = run_scene("energy", {"size": 5.0, "seed": 2, "v": 0.05, "steps": 4000, "safety": 0.05, "contact_damping": 0.05})
+    e = r["energies"]
+    print("contact damping 0.05: viscDamp %.3g of the initial energy, balance worst %.2e drift %+.2e" % (e["viscDamp"] / r["e0"], r["worst"], r["drift"]))
+    assert e["viscDamp"] > 0.01 * r["e0"]  # the dashpots act (3 % in these 4000 steps)
+    assert r["worst"] < 0.01 and abs(r["drift"]) < 2e-3
+
+
 def test_saved_scene_continues_like_the_uninterrupted_run(tmp_path):
     args = {"steps": 600, "safety": 0.8}
     straight = run_scene("energy", args, threads=1)

@@ -1,10 +1,13 @@
 """Making deformable blocks (issue 38), every way a user does: RbsmMat.deformable gives polygon2d's blocks a
 DeformableState (rigid materials keep YADE's State); its strain is set by constructor, assignment and updateAttrs
 and kept by O.save/O.load; the as-built joints of two deformable blocks are welded, joints made later, broken
-ones and the joints a joint set is given to are not; an O.engines without BlockStrainIntegrator and a penalty
+ones and the joints a joint set is given to are not; a welded joint's linearShare is 1/penalty, set by any way
+and refused outside (0, 1]; an O.engines without BlockStrainIntegrator and a penalty
 below 1 are refused with a message naming the problem (the body). Fails on da6a37e."""
 import os
 import sys
+
+import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "yade"))
 from yaderun import run_ok  # noqa: E402
@@ -37,11 +40,20 @@ omega.ip2(O).setCohesionNow = True
 O.step()
 J = lambda i, j: O.interactions[i, j]
 out["welded"] = {"soil-soil": J(a, b).phys.welded, "soil-rock": J(b, c).phys.welded, "sides": [J(a, b).geom.strainSides, J(b, c).geom.strainSides]}
+out["linearShare"] = [J(a, b).phys.linearShare, J(b, c).phys.linearShare]
+out["share_refused"] = []
+for bad in (0.0, -1.0, 1.5, float("nan")):
+    try:
+        J(a, b).phys.linearShare = bad
+    except ValueError as e:
+        out["share_refused"].append(str(e))
+J(a, d).phys.updateAttrs({"linearShare": 0.5})
 J(a, d).phys.breakJoint()
 out["broken_welded"] = J(a, d).phys.welded
 O.save("deformable.xml")
 O.load("deformable.xml")
-out["loaded"] = [type(O.bodies[a].state).__name__, list(O.bodies[a].state.strainRate), O.interactions[a, b].phys.welded]
+out["loaded"] = [type(O.bodies[a].state).__name__, list(O.bodies[a].state.strainRate), O.interactions[a, b].phys.welded,
+                 O.interactions[a, b].phys.linearShare, O.interactions[a, d].phys.linearShare]
 O.engines = [e for e in O.engines if type(e).__name__ != "BlockStrainIntegrator"]
 O.engines[3].checkNextStep()  # the time stepper's next step is a full estimate
 try:
@@ -61,6 +73,10 @@ def test_making_deformable_blocks(tmp_path):
     assert r["welded"] == {"soil-soil": True, "soil-rock": False, "sides": [3, 1]}
     assert r["broken_welded"] is False
     assert r["loaded"][0] == "DeformableState" and r["loaded"][2] is True
+    # welded: the mean jump takes the penalty (100), the bending Kawai's springs; kept by save/load, refused outside (0, 1]
+    assert r["linearShare"][0] == pytest.approx(0.01, rel=1e-9) and r["linearShare"][1] == 1
+    assert r["loaded"][3:] == [r["linearShare"][0], 0.5]
+    assert len(r["share_refused"]) == 4 and all("linearShare" in m and "(0, 1]" in m for m in r["share_refused"])
     assert "BlockStrainIntegrator" in r["no_integrator"] and "body #" in r["no_integrator"]
 
 

@@ -15,7 +15,8 @@ mat = RbsmMat(young=1e8, poisson=p.get("nu", 0.25), density=2000, planeStrain=Tr
 O.materials.append(mat)
 size = p.get("size", 4.0)
 ids = [O.bodies.append(polygon2d(b, mat)) for b in voronoi_blocks([(0, 0), (size, 0), (size, size), (0, size)], n=p.get("n", 30), seed=p.get("seed", 1))]
-O.engines = yade_rbsm.engines(gravity=(0, 0, 0), damping=0, safety=p.get("safety", 0.8), impact_safety=p.get("safety", 0.8))
+O.engines = yade_rbsm.engines(gravity=(0, 0, 0), damping=0, safety=p.get("safety", 0.8), impact_safety=p.get("safety", 0.8),
+                              contact_damping=p.get("contact_damping", 0.0))
 omega.ip2(O).setCohesionNow = True
 O.trackEnergy = True
 O.step()  # the joints are made (welded) at rest
@@ -29,7 +30,7 @@ for i in ids:
 
 
 def total():
-    return sum(O.energy[k] for k in O.energy.keys() if k in ("kinetic", "strainKinetic", "elastPotential", "strainElastic"))
+    return sum(O.energy[k] for k in O.energy.keys() if k in ("kinetic", "strainKinetic", "elastPotential", "strainElastic", "viscDamp"))
 
 
 def snapshot():
