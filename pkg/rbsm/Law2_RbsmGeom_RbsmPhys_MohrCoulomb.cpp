@@ -107,21 +107,23 @@ namespace {
 		bool     carries  = false;
 	};
 
-	// A force f on body 2 at s along the segment: into the resultant and its moment about p0.
-	[[gnu::always_inline]] inline void addForceAt(const JointStep& j, Real s, const Vector2r& f, JointSums& sum)
+	// A force f on body 2 at s along the segment: into the resultant and its moment about p0 (and with
+	// Strain, the joint of a deformable block, into the first moment that loads its strain). The rigid
+	// joints' step is instantiated without it: their sums keep their registers (issue 38: within 1 %).
+	template <bool Strain> [[gnu::always_inline]] inline void addForceAt(const JointStep& j, Real s, const Vector2r& f, JointSums& sum)
 	{
 		sum.force += f;
 		sum.momentP0 += s * cross(j.seg, f); // (x_k − p0) × f, x_k − p0 = s_k (p1 − p0)
-		sum.firstMoment += s * f;
+		if constexpr (Strain) sum.firstMoment += s * f;
 	}
 
 	// What a point adds to the sums: its force (springs fn, fs, with the dashpots' share) at s along the
 	// segment, and its law's results r; strength: its Mohr-Coulomb strength times its area.
-	[[gnu::always_inline]] inline void addToSums(const RbsmGeom& g, const JointStep& j, Real s, Real fn, Real fs, const rbsm::JointPointResult& r,
+	template <bool Strain> [[gnu::always_inline]] inline void addToSums(const RbsmGeom& g, const JointStep& j, Real s, Real fn, Real fs, const rbsm::JointPointResult& r,
 	                                             bool open, Real strength, JointSums& sum)
 	{
 		sum.carries |= !open;
-		addForceAt(j, s, fn * g.normal + fs * j.tangent, sum);
+		addForceAt<Strain>(j, s, fn * g.normal + fs * j.tangent, sum);
 		sum.elastic += r.elasticEnergy;
 		sum.dissipated += r.dissipated;
 		sum.released += r.released;
@@ -132,7 +134,7 @@ namespace {
 
 	// Point k of the rule: the law at the point (rbsm::updateJointPoint) and the viscous damping, added
 	// to the sums. (Inlined early, so that the sums can stay in registers.)
-	[[gnu::always_inline]] inline void addPoint(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int k, JointSums& sum)
+	template <bool Strain> [[gnu::always_inline]] inline void addPoint(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int k, JointSums& sum)
 	{
 		RbsmPhys::Point* const       pts = p.pointData();
 		const Real                   s   = g.rule->s[k];
@@ -156,7 +158,7 @@ namespace {
 			fs += ds;
 			sum.viscous += (dn * vn - ds * vs) * j.dt;
 		}
-		addToSums(g, j, s, fn, fs, r, st.open, ((st.intact ? j.params.cohesion : 0) + std::max<Real>(0, r.normalTraction) * p.tanPhi) * a, sum);
+		addToSums<Strain>(g, j, s, fn, fs, r, st.open, ((st.intact ? j.params.cohesion : 0) + std::max<Real>(0, r.normalTraction) * p.tanPhi) * a, sum);
 	}
 }
 
@@ -165,7 +167,7 @@ namespace {
 	// dashpots and the sums as addPoint's. The shear dashpots act while the joint sticks, and with the
 	// springs they stay within the joint's friction of the springs' normal force. N >= n: the size of
 	// the point arrays (small for the common 2 points: they are set up at every step).
-	template <int N> void addFrictionalPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n, JointSums& sum)
+	template <int N, bool Strain> void addFrictionalPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n, JointSums& sum)
 	{
 		RbsmPhys::Point* const pts = p.pointData();
 		Real                   s[N], a[N], overlap[N], dus[N], vn[N], vs[N];
@@ -196,7 +198,7 @@ namespace {
 		for (int k = 0; k < n; k++) {
 			pts[k].normalTraction = r[k].normalTraction;
 			sum.viscous += (dn[k] * vn[k] - keep * ds[k] * vs[k]) * j.dt;
-			addToSums(g, j, s[k], r[k].normalForce + dn[k], r[k].shearForce + keep * ds[k], r[k], pts[k].joint.open, r[k].normalForce * p.tanPhi, sum);
+			addToSums<Strain>(g, j, s[k], r[k].normalForce + dn[k], r[k].shearForce + keep * ds[k], r[k], pts[k].joint.open, r[k].normalForce * p.tanPhi, sum);
 		}
 	}
 }
@@ -211,8 +213,10 @@ namespace {
 	// (Why: a linear jump penalised at every edge of a Voronoi cell over-constrains the cells' linear
 	// fields, which then lock in any field but a uniform one: a Brazilian disc's centre carried 0.28 of its
 	// tension, tests/deformable/test_disc.py.)
-	void addWeldedPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n, JointSums& sum)
+	// (Out of line and returning its sums: the common joint's sums stay in registers.)
+	[[gnu::noinline]] JointSums weldedPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n)
 	{
+		JointSums              sum;
 		constexpr int          N   = rbsm::kMaxIntegrationPoints;
 		RbsmPhys::Point* const pts = p.pointData();
 		const Real             b   = std::sqrt(p.linearShare);
@@ -245,9 +249,10 @@ namespace {
 			pts[k].normalTraction      = sn;
 			pts[k].joint.shearTraction = tau;
 			const Real a = w[k] * j.area;
-			addToSums(g, j, g.rule->s[k], (sn + toPoint(cn[k], cMean[0])) * a, (tau + toPoint(cs[k], cMean[1])) * a, r[k], false,
+			addToSums<true>(g, j, g.rule->s[k], (sn + toPoint(cn[k], cMean[0])) * a, (tau + toPoint(cs[k], cMean[1])) * a, r[k], false,
 			          std::numeric_limits<Real>::infinity(), sum); // (welded: unlimited)
 		}
+		return sum;
 	}
 }
 
@@ -263,7 +268,7 @@ namespace {
 
 	// Water in the joint: the pore pressure u_k = γw (h(x_k) − y_k) ≥ 0 at each point pushes the blocks
 	// apart (force u_k a_k along the normal on body 2, as a compression would); returns Σ u_k a_k.
-	Real addWater(const RbsmGeom& g, const JointStep& j, const std::vector<Vector2r>& line, Real gammaW, int n, JointSums& sum)
+	template <bool Strain> Real addWater(const RbsmGeom& g, const JointStep& j, const std::vector<Vector2r>& line, Real gammaW, int n, JointSums& sum)
 	{
 		Real total = 0;
 		for (int k = 0; k < n; k++) {
@@ -272,7 +277,7 @@ namespace {
 			const Real     u = gammaW * std::max<Real>(0, phreaticHeight(line, x.x()) - x.y());
 			if (u <= 0) continue;
 			const Real pushed = u * g.rule->w[k] * j.area;
-			addForceAt(j, s, pushed * g.normal, sum);
+			addForceAt<Strain>(j, s, pushed * g.normal, sum);
 			total += pushed;
 		}
 		return total;
@@ -306,6 +311,15 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 {
 	RbsmGeom& g = static_cast<RbsmGeom&>(*ig);
 	RbsmPhys& p = static_cast<RbsmPhys&>(*ip);
+	// a joint between rigid blocks has no strain to load and is not welded: its step is compiled without them
+	return g.strainSides || p.welded ? deformableJoint(g, p, I) : joint<false>(g, p, I);
+}
+
+// (Out of line, so that go's own step for rigid joints is laid out for them alone.)
+[[gnu::noinline]] bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::deformableJoint(RbsmGeom& g, RbsmPhys& p, Interaction* I) { return joint<true>(g, p, I); }
+
+template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& g, RbsmPhys& p, Interaction* I)
+{
 	const int n = g.nPoints();
 	if (p.nPoints != n) { // an RbsmPhys set by hand that does not fit its contact
 		reportPointMismatch(*I, p.nPoints, n);
@@ -322,9 +336,9 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	// reduced mass, 2·sqrt(kn·A·m), spread over the joint area (traction per velocity).
 	const bool damped    = dampingRatio > 0 && g.reducedMass > 0 && area > 0;
 	p.dampingCoefficient = damped ? dampingRatio * 2 * std::sqrt(p.kn * area * g.reducedMass) / area : 0;
-	JointStep j { rbsm::JointParams { p.kn, p.ks, p.cohesion, p.tanPhi, p.tensileStrength, p.ductile }, area, damped, g.kinematics(), g.tangent(), g.p1 - g.p0,
+	JointStep j { rbsm::JointParams { p.kn, p.ks, p.cohesion, p.tanPhi, p.tensileStrength, p.ductile }, area, damped, g.template kinematics<Strain>(), g.tangent(), g.p1 - g.p0,
 		      scene->dt, scene->trackEnergy };
-	if (p.welded) // a cut of a continuum: elastic, unlimited (the strengths are not used)
+	if (Strain && p.welded) // a cut of a continuum: elastic, unlimited (the strengths are not used)
 		j.params.cohesion = j.params.tensileStrength = std::numeric_limits<Real>::infinity();
 	else if (p.cohesion != 0 || p.tensileStrength != 0) { // cohesionless joints have no bond to scale
 		const Real bonded = bondedFraction(p, g, j.kin, j.tangent, scene->dt);
@@ -332,19 +346,22 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 		j.params.tensileStrength *= bonded;
 	}
 	// frictional: no bond left (or none to begin with): the joint slips as a whole
-	const bool frictional = !p.welded && ((p.cohesion == 0 && p.tensileStrength == 0) || p.nIntact() == 0);
-	JointSums  sum;
+	const bool frictional = !(Strain && p.welded) && ((p.cohesion == 0 && p.tensileStrength == 0) || p.nIntact() == 0);
+	JointSums sum;
 	sum.released = spreadShearOverGrowth(p, g, n, scene->trackEnergy);
 	if (frictional) {
-		if (n <= RbsmPhys::kInlinePoints) addFrictionalPoints<RbsmPhys::kInlinePoints>(g, p, j, n, sum);
-		else addFrictionalPoints<rbsm::kMaxIntegrationPoints>(g, p, j, n, sum);
+		if (n <= RbsmPhys::kInlinePoints) addFrictionalPoints<RbsmPhys::kInlinePoints, Strain>(g, p, j, n, sum);
+		else addFrictionalPoints<rbsm::kMaxIntegrationPoints, Strain>(g, p, j, n, sum);
 	}
-	else if (p.welded && p.linearShare < 1)
-		addWeldedPoints(g, p, j, n, sum);
+	else if (Strain && p.welded && p.linearShare < 1) {
+		const Real released = sum.released;
+		sum                 = weldedPoints(g, p, j, n);
+		sum.released += released;
+	}
 	else
 		for (int k = 0; k < n; k++)
-			addPoint(g, p, j, k, sum);
-	if (!phreatic.empty() && (p.water || waterAll)) p.waterForce = addWater(g, j, phreatic, waterUnitWeight, n, sum);
+			addPoint<Strain>(g, p, j, k, sum);
+	if (!phreatic.empty() && (p.water || waterAll)) p.waterForce = addWater<Strain>(g, j, phreatic, waterUnitWeight, n, sum);
 	else if (p.waterForce != 0) p.waterForce = 0; // the water was taken away
 	const Real torque2 = sum.momentP0 + cross(g.p0 - g.centroid2, sum.force);
 	const Real torque1 = -(sum.momentP0 + cross(g.p0 - g.centroid1, sum.force));
@@ -360,7 +377,7 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	// water; beyond it the geometry loses the joint and its water goes: Hoek & Bray's V is lost, issue 40).
 	if (!sum.carries && p.waterForce == 0 && g.separation > 1e-9 * (g.h1 + g.h2)) return false;
 
-	if (g.strainSides) addStrainLoads(*I, g, sum.force, sum.firstMoment);
+	if constexpr (Strain) addStrainLoads(*I, g, sum.force, sum.firstMoment);
 	const Vector3r f3(sum.force.x(), sum.force.y(), 0);
 	scene->forces.addForce(I->getId1(), -f3);
 	scene->forces.addForce(I->getId2(), f3);

@@ -55,6 +55,11 @@ public:
 	);
 	// clang-format on
 	FUNCTOR2D(RbsmGeom, RbsmPhys);
+
+private:
+	//! The step of one joint; Strain: a joint of a deformable block (RbsmGeom.strainSides) or a welded one.
+	template <bool Strain> bool joint(RbsmGeom& g, RbsmPhys& p, Interaction* I);
+	bool deformableJoint(RbsmGeom& g, RbsmPhys& p, Interaction* I);
 	DEFINE_FUNCTOR_ORDER_2D(RbsmGeom, RbsmPhys);
 };
 REGISTER_SERIALIZABLE(Law2_RbsmGeom_RbsmPhys_MohrCoulomb);

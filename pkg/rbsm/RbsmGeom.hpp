@@ -83,12 +83,13 @@ public:
 		nIP  = n;
 	}
 	int nPoints() const { return rule ? rule->n : 0; }
-	/// The relative motion along the segment, for the law to sample at its points.
-	rbsm::SegmentKinematics kinematics() const
+	/// The relative motion along the segment, for the law to sample at its points (Strain false: the law's
+	/// step of a joint between rigid blocks, which knows there is no strain to add).
+	template <bool Strain = true> rbsm::SegmentKinematics kinematics() const
 	{
 		const Vector2r          seg = p1 - p0;
 		rbsm::SegmentKinematics k { d0, d1, relativeVelocity, relativeAngularVelocity * Vector2r(-seg.y(), seg.x()) };
-		if (strainSides) k.dvds += strainSlope; // (deformable blocks only: a rigid joint's sum is untouched)
+		if (Strain && strainSides) k.dvds += strainSlope; // (deformable blocks only: a rigid joint's sum is untouched)
 		return k;
 	}
 	Vector2r point(int k) const;
