@@ -130,3 +130,14 @@ def test_collider_requests_reach_mpy(serial_sorted, mpi_sorted):
     for r in mpi_sorted["ranks"]:
         missed = [s for s in requested if s not in r["collides"]]
         assert not missed, "yade.mpy's collider did not run after steps %s on a rank" % missed
+
+
+def test_deformable_blocks_are_refused_not_hung():
+    """Deformable blocks (issue 38) under yade.mpy: its workers cannot receive them from the master (O.stringToScene
+    raises "unregistered class" on the workers, which the master then waits for: mpiexec hung until its timeout).
+    engines() refuses them on every rank, with the reason, before yade.mpy splits the scene."""
+    with tempfile.TemporaryDirectory() as tmp:
+        r = run_mpi(scene("rows"), [json.dumps(dict(SORTED, deformable=True, mode="mpi", out=os.path.join(tmp, "r.json")))], timeout=90)
+    print(r.tail())
+    assert not r.timed_out and r.returncode != 0
+    assert "deformable blocks" in r.tail() and "yade.mpy" in r.tail()

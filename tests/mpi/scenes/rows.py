@@ -37,7 +37,7 @@ if mpi:
 from yade_rbsm import polygon2d, engines  # noqa: E402
 
 N, steps = p.get("n", 40), p.get("steps", 300)
-rock = RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5)
+rock = RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5, deformable=p.get("deformable", False))
 O.materials.append(rock)
 w, h, gap = 1.0, 0.5, 2e-3
 O.bodies.append(polygon2d([(-1, -1), (N * (w + gap) + 1, -1), (N * (w + gap) + 1, 0), (-1, 0)], rock, fixed=True))
@@ -107,6 +107,8 @@ if rank == 0:
           "across": sum(1 for i in real if O.bodies[i.id1].subdomain != O.bodies[i.id2].subdomain),
           "pos": {str(b.id): [b.state.pos[0], b.state.pos[1], b.state.ori.toAxisAngle()[1] * b.state.ori.toAxisAngle()[0][2]]
                   for b in blocks}}
+    if p.get("deformable"):  # (mergeScene brings each rank's own blocks, their strains with them)
+        result["strain"] = {str(b.id): list(b.state.strain) for b in blocks}
     if p.get("out"):
         with open(p["out"], "w") as f:
             json.dump(result, f)
