@@ -108,8 +108,8 @@ namespace {
 	};
 
 	// A force f on body 2 at s along the segment: into the resultant and its moment about p0 (and with
-	// Strain, the joint of a deformable block, into the first moment that loads its strain). The rigid
-	// joints' step is instantiated without it: their sums keep their registers (issue 38: within 1 %).
+	// Strain, the joint of a deformable block, into the first moment that loads its strain; the rigid
+	// joints' step is instantiated without it).
 	template <bool Strain> [[gnu::always_inline]] inline void addForceAt(const JointStep& j, Real s, const Vector2r& f, JointSums& sum)
 	{
 		sum.force += f;
@@ -212,8 +212,7 @@ namespace {
 	// own, τ̄ + (τ − τ̄)/b, are taken back before the update.
 	// (Why: a linear jump penalised at every edge of a Voronoi cell over-constrains the cells' linear
 	// fields, which then lock in any field but a uniform one: a Brazilian disc's centre carried 0.28 of its
-	// tension, tests/deformable/test_disc.py.)
-	// (Out of line and returning its sums: the common joint's sums stay in registers.)
+	// tension, tests/deformable/test_disc.py.) Out of line: the common joints' step does not carry it.
 	[[gnu::noinline]] JointSums weldedPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n)
 	{
 		JointSums              sum;
