@@ -5,8 +5,8 @@ syy = -3 sxx), independent of E and nu, and the extension of the horizontal diam
 
 Deformable blocks converge to both (sxx -13.8 %, -6.4 %, -1.9 %; extension -9.5 %, -2.2 %, -1.2 %); rigid blocks
 carry the stress but their assembly's Poisson's ratio is the geometry's, so the disc widens 38 % too little.
-Welded joints whose jump was penalised in full at every point (RbsmPhys.linearShare = 1, as on 7b37b27) locked:
-the centre carried 0.28, 0.54, 0.79 of its tension. Fails on 7b37b27 (the lock; no linearShare attribute)."""
+Welded joints whose jump was penalised in full at every point (RbsmPhys.linearShare = 1, as on 09b6867) locked:
+the centre carried 0.28, 0.54, 0.79 of its tension. Fails on 09b6867 (the lock; no linearShare attribute)."""
 import pytest
 
 from conftest import run_scene

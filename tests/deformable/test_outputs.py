@@ -2,7 +2,7 @@
 "stress" cell array) and the stress-based factor of safety's field (le_bridge.stress_field) all give the
 block's own D·ε (DeformableState.stress), and in a settled column of Voronoi blocks under its weight on a
 frictionless base that is the closed form σyy = −ρ g (H − y), σxx = 0 (rms within 5 % of ρ g H).
-A guard, not a fix: it passes on 4399a9f; a reader that took the joints' Love-Weber average instead (equal at
+A guard, not a fix: it passes on 1984eeb; a reader that took the joints' Love-Weber average instead (equal at
 rest to about 1e-6) fails its 1e-12 comparison."""
 import os
 import sys
