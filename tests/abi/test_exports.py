@@ -2,7 +2,10 @@
 
 A plugin defines weak copies of every inline YADE function and vtable it uses; if one of them were
 exported it could interpose over Debian's definition for the whole process (see the shared notes).
-The patterns of the plugin's own symbols are read from pkg/rbsm/exports.map.
+The patterns of the plugin's own symbols are read from pkg/rbsm/exports.map. One group is exported on
+purpose: boost::serialization's registries of yade::State (DeformableState's base), so that the plugin binds to
+libyade's and a scene holds one State class (with the plugin's own local copies a file mixing deformable and
+rigid blocks failed to load in a new process: "unregistered class"; test_persistence_of_mixed_states).
 """
 import fnmatch
 import re
@@ -23,6 +26,11 @@ def export_patterns(path):
     return pats
 
 
+def shared_patterns(path):
+    """The exports.map patterns of YADE's own State registries (exported so as to bind to libyade's)."""
+    return [p for p in export_patterns(path) if "N4yade5StateE" in p]
+
+
 def test_exports_map_is_used(plugin, exports_map):
     """Every defined dynamic symbol matches a global pattern of exports.map (the version script is in effect)."""
     pats = export_patterns(exports_map)
@@ -35,13 +43,16 @@ def test_every_export_mentions_a_plugin_class(plugin, exports_map):
     names = [p.strip("*") for p in export_patterns(exports_map)]
     syms = list(elfinfo.dynamic_symbols(plugin))
     dem = demangle(syms)
-    bad = [d for d in dem if not any(n in d for n in names)]
+    shared = shared_patterns(exports_map)
+    bad = [d for s, d in zip(syms, dem) if not any(n in d for n in names) and not any(fnmatch.fnmatchcase(s, p) for p in shared)]
     assert not bad, "exported symbols that name no plugin class (%s):\n  %s" % (names, "\n  ".join(bad[:20]))
 
 
-def test_no_symbol_of_yade_is_exported(plugin, yade_libs):
-    """No exported symbol of the plugin is also defined by Debian's libraries (it would interpose)."""
-    ours = set(elfinfo.dynamic_symbols(plugin))
+def test_no_symbol_of_yade_is_exported(plugin, yade_libs, exports_map):
+    """No exported symbol of the plugin is also defined by Debian's libraries (it would interpose), but State's
+    serialization registries, which must be libyade's (loaded first, so the plugin's references bind to them)."""
+    shared = shared_patterns(exports_map)
+    ours = set(s for s in elfinfo.dynamic_symbols(plugin) if not any(fnmatch.fnmatchcase(s, p) for p in shared))
     clash = {}
     for lib in yade_libs:
         for s in ours & set(elfinfo.dynamic_symbols(lib)):

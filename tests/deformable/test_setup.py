@@ -99,3 +99,34 @@ def test_engines_add_the_strain_integrator_only_for_deformable_materials():
     for names in (r["forced"], r["auto"]):
         assert names[-2:] == ["BlockStrainIntegrator", "NewtonIntegrator"]
     assert len(r["auto"]) == len(r["rigid"]) + 1
+
+
+MIXED_SAVE = r"""
+from yade_rbsm import polygon2d
+soil = RbsmMat(young=1e8, density=2000, deformable=True)
+rock = RbsmMat(young=1e8, density=2000)
+O.materials.append(soil); O.materials.append(rock)
+O.bodies.append(polygon2d([(0, 0), (1, 0), (1, 1), (0, 1)], soil))
+O.bodies.append(polygon2d([(1, 0), (2, 0), (2, 1), (1, 1)], rock))
+O.bodies[0].state.strain = (1e-4, 2e-4, 3e-4)
+O.save("mixed.yade.gz")
+open("mixed.str", "wb").write(O.sceneToString())
+report(saved=True)
+"""
+
+MIXED_LOAD = r"""
+O.load("mixed.yade.gz")
+loaded = [type(b.state).__name__ for b in O.bodies] + [list(O.bodies[0].state.strain)]
+O.stringToScene(open("mixed.str", "rb").read())
+report(loaded=loaded, string=[type(b.state).__name__ for b in O.bodies])
+"""
+
+
+def test_persistence_of_mixed_states(tmp_path):
+    """A scene of deformable and rigid blocks saved in YADE's binary format (.yade.gz, and the string yade.mpy
+    sends its workers) loads in a new process. Failed on 09b6867 ("unregistered class": the plugin kept its own
+    copy of boost's State registries, pkg/rbsm/exports.map)."""
+    run_ok(MIXED_SAVE, workdir=str(tmp_path))
+    (r,) = run_ok(MIXED_LOAD, workdir=str(tmp_path))
+    assert r["loaded"] == ["DeformableState", "State", [1e-4, 2e-4, 3e-4]]
+    assert r["string"] == ["DeformableState", "State"]
