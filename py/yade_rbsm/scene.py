@@ -96,10 +96,6 @@ def engines(gravity=(0, -9.81, 0), damping=0.0, contact_damping=0.0, nIP=2, safe
     if mpi:
         from .mpi import sync_engine
 
-        if strain:  # refused on every rank alike (each runs engines()), before yade.mpy can hang
-            raise ValueError("engines: deformable blocks (RbsmMat.deformable) do not run under yade.mpy yet: its workers "
-                             "fail to receive them from the master (\"unregistered class\" in O.stringToScene) and the master "
-                             "waits for ever. Run them serially (-j N threads), or with rigid blocks under yade.mpy.")
 
         stepper.deferErrors = True
         sync = [sync_engine()]

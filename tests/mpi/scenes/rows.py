@@ -39,12 +39,12 @@ from yade_rbsm import polygon2d, engines  # noqa: E402
 N, steps = p.get("n", 40), p.get("steps", 300)
 rock = RbsmMat(young=1e8, poisson=0.2, density=2000, frictionAngle=0.5, deformable=p.get("deformable", False))
 O.materials.append(rock)
-w, h, gap = 1.0, 0.5, 2e-3
+w, h, gap = 1.0, 0.5, p.get("gap", 2e-3)
 O.bodies.append(polygon2d([(-1, -1), (N * (w + gap) + 1, -1), (N * (w + gap) + 1, 0), (-1, 0)], rock, fixed=True))
 for row in range(2):
     for i in range(N):
         x0 = i * (w + gap) + (0.5 * w if row else 0) + 1e-3 * math.sin(i)
-        y0 = row * (h + gap) + 1e-3
+        y0 = row * (h + gap) + gap / 2
         b = polygon2d([(x0, y0), (x0 + w, y0), (x0 + w, y0 + h), (x0, y0 + h)], rock)
         b.state.vel = (p.get("vx", 0.3) * math.sin(1.7 * i + row), -p.get("vy", 0.1), 0)
         b.state.angVel = (0, 0, p.get("w", 0.05) * math.cos(i))
