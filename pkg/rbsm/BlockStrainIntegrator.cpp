@@ -8,6 +8,7 @@
 #include <pkg/rbsm/RbsmMat.hpp>
 #include <pkg/rbsm/RbsmTimeStepper.hpp>
 #include <pkg/rbsm/StepReport.hpp>
+#include <pkg/rbsm/kernel/BlockPlasticity.hpp>
 
 #include <sstream>
 
@@ -58,6 +59,7 @@ void BlockStrainIntegrator::action()
 		scene->energy->add(e.kinetic, "strainKinetic", energyIds[0], /*reset every step*/ true);
 		scene->energy->add(e.elastic, "strainElastic", energyIds[1], /*reset every step*/ true);
 		if (e.damped != 0) scene->energy->add(e.damped, "nonviscDamp", energyIds[2], /*cumulative*/ false);
+		if (e.plastic != 0) scene->energy->add(e.plastic, "plastDissip", energyIds[3], /*cumulative*/ false);
 	}
 }
 
@@ -67,17 +69,18 @@ Real BlockStrainIntegrator::stepBlock(const Body& b, DeformableState& ds, const 
 	const Vector3r         joints = ds.takeStrainLoad();
 	const rbsm::Mat3       D      = rbsm::elasticityMatrix(mat.young, mat.poisson, mat.planeStrain);
 	const Real             volume = poly.area * poly.thickness;
-	const Vector3r         sigma  = D * ds.strain; // block frame
+	const Vector3r         sigma  = D * (ds.strain - ds.plasticStrain); // block frame
 	const rbsm::StrainMass& M     = ds.strainMass(poly);
 	const Vector3r         load   = joints - volume * sigma;
 	if (scene->trackEnergy) { // before the update, as NewtonIntegrator's: ε̇ and ω at t − dt/2 (its kinetic), ε at t (the joints' springs)
 		e.kinetic += 0.5 * ds.strainRate.dot(M.strain * ds.strainRate) + ds.angVel.z() * M.thetaStrain.dot(ds.strainRate);
-		e.elastic += 0.5 * volume * ds.strain.dot(sigma);
+		e.elastic += 0.5 * volume * (ds.strain - ds.plasticStrain).dot(sigma);
 	}
 	Real                   jTheta = torque; // the torque NewtonIntegrator must see
 	if (!fixedBlock(ds)) jTheta = integrate(ds, M, torque, load / scale, damping, e);
-	// the stress after the step, in the world frame
-	const Vector3r s = D * ds.strain;
+	// the stress after the step (held to the yield surface), in the world frame
+	Vector3r s = D * (ds.strain - ds.plasticStrain);
+	if (mat.plastic) s = yieldBlock(ds, mat, D, s, volume, e);
 	Real           c, sn;
 	planarCosSin(ds.ori, c, sn);
 	Eigen::Matrix<Real, 2, 2> R, S;
@@ -87,6 +90,20 @@ Real BlockStrainIntegrator::stepBlock(const Body& b, DeformableState& ds, const 
 	ds.stress  = Vector3r(S(0, 0), S(1, 1), S(0, 1));
 	ds.szz     = mat.planeStrain ? mat.poisson * (s[0] + s[1]) : 0;
 	return jTheta;
+}
+
+// FLAC's explicit return: the elastic trial stress s back onto Mohr–Coulomb; the difference becomes plastic
+// strain. The dissipation recorded is the stored energy the return removes, ½V(s + σ)·Δεᵖ, so O.energy closes.
+Vector3r BlockStrainIntegrator::yieldBlock(DeformableState& ds, const RbsmMat& mat, const rbsm::Mat3& D, const Vector3r& s, Real volume, Energies& e)
+{
+	const rbsm::MohrCoulombStrength strength { mat.cohesion, mat.frictionAngle, mat.tensileStrength, std::min(mat.dilatancy, mat.frictionAngle) };
+	const rbsm::PlasticReturn       r = rbsm::mohrCoulombReturn(s, D, strength);
+	ds.yieldMode                      = int(r.mode);
+	if (r.mode == rbsm::YieldMode::elastic) return s;
+	ds.plasticStrain += r.plasticStrain;
+	ds.plasticShear += r.plasticShear;
+	e.plastic += 0.5 * volume * (s + r.stress).dot(r.plasticStrain);
+	return r.stress;
 }
 
 // The (θ, ε) step of one block under the torque T and the strain load P (both divided by the block's density

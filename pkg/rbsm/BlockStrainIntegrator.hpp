@@ -23,7 +23,8 @@ public:
 		"the strain (Σ Bᵀ(r)f, added by the joint law) less the block's own stress, A·t·D·ε. The strain is integrated like NewtonIntegrator's "
 		"velocities and positions (central differences, the same O.dt), with NewtonIntegrator's damping (Cundall's, per strain component); "
 		"the coupled angular acceleration is handed to NewtonIntegrator as a torque (NewtonIntegrator stays YADE's). Energies (O.trackEnergy): "
-		"strainKinetic (the strain modes' kinetic energy beyond the rigid rotation's) and strainElastic (½ A t εᵀDε); the damping's work goes to nonviscDamp. "
+		"strainKinetic (the strain modes' kinetic energy beyond the rigid rotation's) and strainElastic (½ A t εₑᵀDεₑ, εₑ = ε − εᵖ); the damping's work goes to nonviscDamp, the yield of plastic blocks (:yref:`RbsmMat.plastic`, "
+		"held to Mohr-Coulomb by FLAC's explicit return after the step) to plastDissip. "
 		"A fixed block (all DOFs blocked) keeps its strain. Place it right before :yref:`NewtonIntegrator` (yade_rbsm.engines() does "
 		"when a material is deformable); it does nothing while no DeformableState exists. Under yade.mpy it integrates its rank's "
 		"blocks (Body.subdomain), as NewtonIntegrator does.",
@@ -35,7 +36,7 @@ public:
 
 private:
 	struct Energies {
-		Real kinetic = 0, elastic = 0, damped = 0;
+		Real kinetic = 0, elastic = 0, damped = 0, plastic = 0;
 	};
 	struct Torque {
 		Body::id_t id;
@@ -45,10 +46,12 @@ private:
 	Real stepBlock(const Body& b, DeformableState& ds, const Polygon2D& poly, const RbsmMat& mat, Real damping, Real scale, Energies& e);
 	//! The (θ, ε) step of a free block; returns the torque for NewtonIntegrator.
 	Real integrate(DeformableState& ds, const rbsm::StrainMass& M, Real torque, const Vector3r& load, Real damping, Energies& e);
+	//! The stress s of a plastic block held to its yield surface; its plastic strain updated.
+	Vector3r yieldBlock(DeformableState& ds, const RbsmMat& mat, const rbsm::Mat3& D, const Vector3r& s, Real volume, Energies& e);
 	//! Sets RbsmGeom.strainSides of every joint from its blocks' states (blocks made deformable after their joints).
 	void markStrainSides();
 	std::vector<Torque> corrections;
-	int                 energyIds[3] = { -1, -1, -1 };
+	int                 energyIds[4] = { -1, -1, -1, -1 };
 };
 REGISTER_SERIALIZABLE(BlockStrainIntegrator);
 

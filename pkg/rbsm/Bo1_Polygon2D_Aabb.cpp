@@ -1,5 +1,6 @@
 #include <pkg/rbsm/Bo1_Polygon2D_Aabb.hpp>
 
+#include <pkg/rbsm/DeformableState.hpp>
 #include <pkg/rbsm/StepReport.hpp>
 #include <core/Scene.hpp>
 
@@ -47,8 +48,9 @@ void Bo1_Polygon2D_Aabb::go(const shared_ptr<Shape>& shape, shared_ptr<Bound>& b
 	}
 	const rbsm::Pose2 pose = planarPose(se3.position, se3.orientation);
 	Vector2r          lo = Vector2r::Constant(std::numeric_limits<Real>::infinity()), hi = -lo;
+	const DeformableState* ds = body ? deformableState(body->state.get()) : nullptr; // (its strained shape)
 	for (const Vector2r& v : p.vertices) {
-		const Vector2r w = pose.rotate(v);
+		const Vector2r w = pose.rotate(ds ? Vector2r(v + rbsm::strainDisplacement(v, ds->strain)) : v);
 		lo = lo.cwiseMin(w);
 		hi = hi.cwiseMax(w);
 	}

@@ -33,7 +33,10 @@ public:
 		"RbsmMat.newAssocState() for a deformable material (yade_rbsm.polygon2d does it); integrated by :yref:`BlockStrainIntegrator`.",
 		((Vector3r, strain, Vector3r::Zero(), , "Strain of the block (εxx, εyy, γxy) in its own frame (rotating with it; γxy the engineering shear strain) [-]."))
 		((Vector3r, strainRate, Vector3r::Zero(), , "Rate of :yref:`strain<DeformableState.strain>` [1/s]."))
-		((Vector3r, stress, Vector3r::Zero(), Attr::readonly, "Stress of the block, D·ε, in the world frame (σxx, σyy, σxy) [Pa], tension positive as in continuum mechanics; set by :yref:`BlockStrainIntegrator` at every step."))
+		((Vector3r, plasticStrain, Vector3r::Zero(), , "Plastic strain εᵖ of a yielding block (:yref:`RbsmMat.plastic`), (εxx, εyy, γxy) in the block's frame [-]; its stress is D(ε − εᵖ)."))
+		((Real, plasticShear, 0, , "Accumulated plastic shear strain of the block, Σ|Δε1ᵖ − Δε3ᵖ| [-] (the band of a mechanism; 0: never yielded)."))
+		((int, yieldMode, 0, Attr::readonly, "Where the block's stress was at the last step: 0 elastic, 1 on the Mohr-Coulomb shear surface, 2 on the tension cut-off, 3 at their corner."))
+		((Vector3r, stress, Vector3r::Zero(), Attr::readonly, "Stress of the block, D(ε − εᵖ), in the world frame (σxx, σyy, σxy) [Pa], tension positive as in continuum mechanics; set by :yref:`BlockStrainIntegrator` at every step."))
 		((Real, szz, 0, Attr::readonly, "Out-of-plane stress σzz [Pa] (plane strain: ν(σxx + σyy); plane stress: 0)."))
 		((Vector3r, strainLoad, Vector3r::Zero(), (Attr::readonly | Attr::noSave), "The joints' load on the strain at the last step, Σ Bᵀ(r)f (block frame) [N m].")),
 		/*ctor*/ createIndex(); initLoads();,

@@ -56,6 +56,30 @@ namespace {
 	}
 
 
+	// A deformable block as it is now: the element's field is affine, so its shape is the polygon of its
+	// vertices moved by B(r)ε, convex as before; its normals are made anew in the caller's buffer.
+	[[gnu::noinline]] rbsm::PolygonView strainedPolygon(const Polygon2D& shape, const Vector3r& strain, rbsm::Vec2* stack, std::vector<rbsm::Vec2>& heap)
+	{
+		const int   n   = int(shape.vertices.size());
+		rbsm::Vec2* out = stack;
+		if (n > kStackVertices) {
+			heap.resize(2 * size_t(n));
+			out = heap.data();
+		}
+		for (int i = 0; i < n; i++)
+			out[i] = shape.vertices[size_t(i)] + rbsm::strainDisplacement(shape.vertices[size_t(i)], strain);
+		for (int i = 0; i < n; i++) {
+			const rbsm::Vec2 e = out[(i + 1) % n] - out[i];
+			out[n + i]         = rbsm::Vec2(e.y(), -e.x()).normalized();
+		}
+		return rbsm::PolygonView { out, out + n, n };
+	}
+	inline rbsm::PolygonView shapeNow(const Polygon2D& shape, const State& state, rbsm::Vec2* stack, std::vector<rbsm::Vec2>& heap)
+	{
+		if (const DeformableState* ds = deformableState(&state)) return strainedPolygon(shape, ds->strain, stack, heap);
+		return ownFramePolygon(shape, stack, heap);
+	}
+
 	std::atomic<int> periodicReports { 0 }, materialReports { 0 }; // (StepReport.hpp)
 
 	// Overlaps deeper than this fraction of the smaller block are outside what the small-strain
@@ -115,12 +139,28 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 	return maxSeparation;
 }
 
+// A welded joint (RbsmPhys.welded, two deformable blocks) is a cut of a continuum: its sides are the
+// same material points for as long as it is welded, and its springs see their jump (rigid motion and
+// strain), not the undeformed shapes, which overlap or part as the blocks strain (at 5 % plastic strain a
+// clip of them turned the joints and a Tresca plate carried 12 × its strength).
+[[gnu::always_inline]] inline bool weldedJoint(const Interaction& I, const RbsmGeom& g)
+{
+	if (g.strainSides != 3) return false; // (rigid joints: one field of the geometry, no phys read)
+	const IPhys* ip = I.phys.get();
+	return ip && ip->getClassIndex() == RbsmPhys::getClassIndexStatic() && static_cast<const RbsmPhys*>(ip)->welded;
+}
+
 // Frozen kinematics (updateTolerance > 0): a joint that has moved little since its last exact
 // update is followed as material points, without search or clipping, as long as the exact
 // contact would not trim it either: every overlap within reach, d ≥ −maxSeparation (with the
-// kernel's round-off slop). A joint opening beyond gets the exact geometry. True with c if followed.
+// kernel's round-off slop). A joint opening beyond gets the exact geometry. A welded joint is
+// followed so from its first exact step after welding on, however far it moves. True with c if followed.
 [[gnu::always_inline]] inline bool Ig2_Polygon2D_Polygon2D_RbsmGeom::followFrozen(const Pair& pair, const Interaction& I, const RbsmGeom& g, rbsm::EdgeContact& c) const
 {
+	if (g.frozen.get() && !g.lost && weldedJoint(I, g)) {
+		c = rbsm::frozenContact(*g.frozen.get(), pair.rel);
+		return true;
+	}
 	const rbsm::FrozenContact* frozen = updateTolerance > 0 && !g.lost ? g.frozen.get() : nullptr;
 	if (!(frozen && rbsm::frozenDrift(*frozen, pair.rel, pair.A.circumradius, pair.B.circumradius) <= updateTolerance * pair.minSize))
 		return false;
@@ -137,16 +177,19 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 	const bool               existing = g != nullptr;
 	rbsm::Vec2               ownA[2 * kStackVertices], ownB[2 * kStackVertices];
 	std::vector<rbsm::Vec2>  heapA, heapB;
-	const rbsm::PolygonView  va = ownFramePolygon(pair.A, ownA, heapA);
-	const rbsm::PosedPolygon pb { ownFramePolygon(pair.B, ownB, heapB), pair.rel }; // block 2 in block 1's frame
+	// deformable blocks meet as they are, strained (their welded joints are followed frozen instead)
+	const bool               strained = deformableState(&state1) || deformableState(&state2);
+	const rbsm::PolygonView  va = strained ? shapeNow(pair.A, state1, ownA, heapA) : ownFramePolygon(pair.A, ownA, heapA);
+	const rbsm::PosedPolygon pb { strained ? shapeNow(pair.B, state2, ownB, heapB) : ownFramePolygon(pair.B, ownB, heapB), pair.rel }; // block 2 in block 1's frame
 	const Real               maxSeparation = reach(*I, existing);
 	rbsm::ContactHint        hint;
 	if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
 	const rbsm::ContactQuery query { maxSeparation, g ? &hint : nullptr, hysteresis, pair.minSize };
 	rbsm::Coherence          coherence { { rbsm::Pose2(), pair.A.circumradius }, { pair.rel, pair.B.circumradius }, g ? &g->searchMemory : nullptr };
 	// A followed joint whose search memory certifies this step: from the few vertices it needs
-	// (rbsm::followContact, bit for bit edgeContact's result). Otherwise block 2 is placed whole.
-	if (!(g && rbsm::followContact(va, pb, query, coherence, c))) {
+	// (rbsm::followContact, bit for bit edgeContact's result; its certificate holds for rigid shapes only).
+	// Otherwise block 2 is placed whole.
+	if (!(g && !strained && rbsm::followContact(va, pb, query, coherence, c))) {
 		rbsm::Vec2              stackB[2 * kStackVertices];
 		std::vector<rbsm::Vec2> placedHeap;
 		if (pb.local.n > kStackVertices) placedHeap.resize(2 * size_t(pb.local.n));
@@ -168,7 +211,10 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 		g->markLost(c.separation);
 		return Outcome::Lost;
 	}
-	g->exactAt(c, pair.rel, updateTolerance > 0);
+	const bool freeze = updateTolerance > 0 || weldedJoint(*I, *g);
+	g->exactAt(c, pair.rel, freeze);
+	g->onStrainedShapes = strained;
+	if (strained && freeze) g->recordStrainsMade(state1, state2); // (a frozen step adds the strain since)
 	return Outcome::Touching;
 }
 
@@ -211,7 +257,7 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	const bool        existing = I->geom && !force;
 	RbsmGeom*         g        = existing ? static_cast<RbsmGeom*>(I->geom.get()) : nullptr;
 	rbsm::EdgeContact c;
-	if (g && followFrozen(pair, *I, *g, c)) g->frozenSteps++;
+	if (g && followFrozen(pair, *I, *g, c)) g->frozenSteps++, g->onStrainedShapes = false;
 	else {
 		const Outcome o = exactContact(pair, state1, state2, I, g, c);
 		if (o != Outcome::Touching) return o == Outcome::Lost; // a lost joint goes to the law

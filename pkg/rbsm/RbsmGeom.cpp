@@ -65,8 +65,10 @@ void RbsmGeom::addStrainMotion(const State& state1, const State& state2)
 		const Real sign  = side == 2 ? 1 : -1; // block 2's motion relative to block 1's
 		const StrainsMade* made   = strainsMade.get();
 		const Vector3r     strain = made ? Vector3r(ds->strain - (side == 1 ? made->block1 : made->block2)) : ds->strain;
-		d0 -= sign * normal.dot(field(p0, strain));
-		d1 -= sign * normal.dot(field(p1, strain));
+		if (!onStrainedShapes) {
+			d0 -= sign * normal.dot(field(p0, strain));
+			d1 -= sign * normal.dot(field(p1, strain));
+		}
 		const Vector2r v0 = field(p0, ds->strainRate);
 		relativeVelocity += sign * v0;
 		strainSlope += sign * (field(p1, ds->strainRate) - v0);

@@ -56,7 +56,7 @@ public:
 		((int, refEdge, -1, Attr::readonly, "Index of the reference edge (vertex i → i+1) on that block."))
 		((int, incEdge, -1, Attr::readonly, "Index of the incident edge (the other block's edge that faces the reference edge, vertex i → i+1) at the last exact update; -1 if unknown."))
 		((int, nIP, 0, Attr::readonly, "Number of integration points along the contact (Gauss-Legendre rule of :yref:`positions<RbsmGeom.positions>` and :yref:`weights<RbsmGeom.weights>`), from :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.nIP` when the contact was made."))
-		((int, frozenSteps, 0, Attr::readonly, "Steps since the contact geometry was last computed exactly (0: exact at this step). Above 0 only with :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance` > 0, while the joint is followed as material points."))
+		((int, frozenSteps, 0, Attr::readonly, "Steps since the contact geometry was last computed exactly (0: exact at this step). Above 0 only with :yref:`Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance` > 0, while the joint is followed as material points, and for a welded joint (:yref:`RbsmPhys.welded`), which is followed so from its first step after welding for as long as it is welded."))
 		((bool, lost, false, (Attr::readonly | Attr::noSave), "The blocks of this joint no longer face each other within reach (the facing edge clipped away, or separated beyond what intact springs can hold): the law breaks every point and removes the joint."))
 		((int, strainSides, 0, Attr::readonly, "Which blocks of the joint are deformable (:yref:`DeformableState`): 1 block 1, 2 block 2, 3 both, 0 none; read when the joint is made (and by :yref:`BlockStrainIntegrator` when deformable blocks appear). Their strain's displacement is in deltaN and the velocities, and the joint's tractions load it.")),
 		/*ctor*/ createIndex();,
@@ -93,21 +93,22 @@ public:
 		return k;
 	}
 	Vector2r point(int k) const;
-	/// Deformable blocks (strainSides): their strain's displacement B(r)ε, and its rate, added to the overlap
-	/// at the segment's ends and to the relative velocity along it (linear in s, as the rigid motion's).
+	/// Deformable blocks (strainSides): their strain's displacement B(r)ε since the contact was frozen, and its
+	/// rate, added to the overlap at the segment's ends and to the relative velocity along it (linear in s, as
+	/// the rigid motion's); a contact found on the strained shapes (onStrainedShapes) takes the rate only.
 	void addStrainMotion(const State& state1, const State& state2);
+	/// This step's contact was found on the deformable blocks' strained shapes (set by Ig2 at every step).
+	bool onStrainedShapes = false;
 	/// The strain rates' part of the change of the relative velocity from p0 to p1 [m/s] (addStrainMotion).
 	Vector2r strainSlope = Vector2r::Zero();
-	/// The deformable blocks' strains when the joint was made (strainSides; on the heap: a rigid joint carries one
-	/// pointer): the joint's springs take the strain since then, as the shear spring takes the slip since then.
-	/// The contact is found on the blocks' undeformed shapes, so a contact made between strained blocks would
-	/// otherwise start with their strain's overlap, a spring force from nothing (a pile of deformable blocks
-	/// gained 1.1 % of the work of gravity). Zero for an assembly bonded unstrained.
+	/// The deformable blocks' strains when the contact was last frozen (strainSides; on the heap: a rigid joint
+	/// carries one pointer): a frozen step follows material points of the shapes strained then, and adds the
+	/// strain since. An exact step finds the contact on the strained shapes themselves (Ig2).
 	struct StrainsMade {
 		Vector3r block1 = Vector3r::Zero(), block2 = Vector3r::Zero();
 	};
 	rbsm::HeapValue<StrainsMade> strainsMade;
-	/// Records the strains of the joint's deformable blocks now (when it is made, or its blocks become deformable).
+	/// Records the strains of the joint's deformable blocks now (when it is frozen, made, or its blocks become deformable).
 	void recordStrainsMade(const State& state1, const State& state2);
 	/// The step's contact c (rbsm::EdgeContact, in block 1's frame frame1, exact or frozen) written to
 	/// the world frame, with the centroids, Kawai's h1 and h2 and the relative motion along the segment

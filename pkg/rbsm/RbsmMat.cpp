@@ -41,6 +41,7 @@ void RbsmMat::postLoad(RbsmMat& m)
 	require(std::isfinite(m.tensileStrength) && m.tensileStrength >= 0, m, "tensileStrength", m.tensileStrength, "must be a finite number >= 0");
 	require(std::isfinite(m.jointKn) && m.jointKn >= 0, m, "jointKn", m.jointKn, "must be a finite number >= 0 (0: Kawai's stiffness)");
 	require(std::isfinite(m.jointKs) && m.jointKs >= 0, m, "jointKs", m.jointKs, "must be a finite number >= 0 (0: Kawai's stiffness)");
+	require(std::isfinite(m.dilatancy) && m.dilatancy >= 0 && m.dilatancy < Mathr_PI / 2, m, "dilatancy", m.dilatancy, "must be in [0, pi/2) radians");
 	require(std::isfinite(m.penalty) && m.penalty >= 1, m, "penalty", m.penalty, "must be a finite number >= 1 (a multiple of Kawai's joint stiffness)");
 }
 

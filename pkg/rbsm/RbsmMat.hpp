@@ -38,6 +38,15 @@ public:
 			"elastic springs that neither slip nor break, the cuts of a continuum), while joints made later, broken ones and the builders' "
 			"joint sets and traces keep the Mohr-Coulomb law. Rigid blocks (False, default) are Kawai's. Read when a block is built "
 			"(newAssocState) and when a joint is made; needs :yref:`BlockStrainIntegrator` in O.engines (yade_rbsm.engines() adds it when a material is deformable)."))
+		((bool, plastic, false, ,
+			"Deformable blocks of this material yield (issue 39): their stress D(ε − εᵖ) is held within Mohr-Coulomb with a tension cut-off, "
+			"of the same cohesion, frictionAngle and tensileStrength as the joints (the cut-off at most the apex c cot φ), by FLAC's explicit return "
+			"map at every step (:yref:`BlockStrainIntegrator`), so that a shear band can run through blocks; the plastic strain and the yield state "
+			"are kept in :yref:`DeformableState`. The out-of-plane stress is taken as the intermediate one. Strength reduction reduces the blocks' "
+			"strength with the joints'. False (default): elastic blocks. Read at every step; ignored for rigid blocks."))
+		((Real, dilatancy, 0, Attr::triggerPostLoad,
+			"Dilatancy angle ψ of plastic blocks [rad], in [0, π/2); used as min(ψ, frictionAngle). 0 (default, as Griffiths & Lane's strength reduction): "
+			"plastic flow keeps the block's area."))
 		((Real, penalty, 100, Attr::triggerPostLoad,
 			"Deformable blocks: the stiffness of their joints' springs as a multiple of Kawai's (≥ 1): Kawai's h/E′ is the compliance "
 			"of a rigid block's half, which a deformable block carries in itself, so its side of a joint adds h/(penalty·E′). Larger is "

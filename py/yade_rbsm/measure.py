@@ -143,7 +143,7 @@ def _matrix3(m, scale):
 def block_stresses(O=None, table=None):
     """{body id: Matrix3} average stress of every Polygon2D block [Pa], σ[i][j] = (1/V) Σ f_i x_j
     (symmetric in equilibrium); the RBSM counterpart of YADE's ``bodyStressTensors()``. A deformable
-    block (DeformableState) gives its own stress D·ε instead (DeformableState.stress, the same at rest:
+    block (DeformableState) gives its own stress D(ε − εᵖ) instead (DeformableState.stress, the same at rest:
     its strain equation is V σ = sym Σ x ⊗ f). *table*: a :func:`joint_table` of the same state, if the
     caller has one."""
     from yade import Matrix3

@@ -10,7 +10,9 @@ series ParaView opens (File > Open the ``.pvd``).
   Cell data: ``id`` (body id), ``displacement`` (of the centroid), ``displacementMagnitude``,
   ``velocity`` (of the centroid), ``angularVelocity`` (ω_z, rad/s), ``rotation`` (rad, since the
   reference orientation), ``fixed`` (1 for foundation/walls), ``mass``, ``stress`` (the block's
-  average stress tensor from its joints' forces, tension positive, 9 components: measure.block_stresses).
+  average stress tensor from its joints' forces, tension positive, 9 components: measure.block_stresses);
+  in a scene with deformable blocks also ``plasticShear`` and ``yieldMode`` (DeformableState's; 0 for rigid
+  blocks).
 * ``<prefix>_contacts_NNNN.vtp``: one line cell ``p0``–``p1`` per real RBSM joint. Cell data:
   ``id1``, ``id2``, ``normalForce`` (N, > 0 compression), ``shearForce`` (N, along the tangent, on
   body 2), ``strength`` (N), ``nIntact``, ``nSlipping``, ``nOpen`` (integration-point counts),
@@ -78,6 +80,15 @@ def _polydata(points, sizes, connectivity, point_data, cell_data, lines=False):
     return pd
 
 
+def _plastic_cells(plastic, deformable):
+    """The yield of deformable blocks as cell arrays (none in a scene without them)."""
+    import numpy as np
+    if not deformable:
+        return {}
+    p = np.array(plastic, dtype=float).reshape(-1, 2)
+    return {"plasticShear": p[:, 0], "yieldMode": p[:, 1].astype(np.int32)}
+
+
 def blocks_polydata(O=None, table=None):
     """vtkPolyData of the Polygon2D bodies (see the module docstring); *table*: a
     measure.joint_table of the same state, if the caller has one (for the stresses)."""
@@ -86,7 +97,7 @@ def blocks_polydata(O=None, table=None):
         from yade import O
     from .measure import block_stresses
     stresses = block_stresses(O, table)
-    ids, sizes, x, x0, cell = [], [], [], [], []
+    ids, sizes, x, x0, cell, plastic = [], [], [], [], [], []
     for b in O.bodies:
         if b is None or type(b.shape).__name__ != "Polygon2D":
             continue
@@ -99,6 +110,7 @@ def blocks_polydata(O=None, table=None):
         sizes.append(len(xs))
         cell.append((pos[0], pos[1], rpos[0], rpos[1], v[0], v[1], w[2], _rot2(ori) - _rot2(rori), st.mass,
                      1 if omega.is_fixed(b) else 0))
+        plastic.append((getattr(st, "plasticShear", 0.0), getattr(st, "yieldMode", 0)))
     ids, sizes = np.array(ids, dtype=np.int64), np.array(sizes, dtype=np.int64)
     x = np.array([(p[0], p[1]) for p in x], dtype=float).reshape(-1, 2)
     x0 = np.array([(p[0], p[1]) for p in x0], dtype=float).reshape(-1, 2)
@@ -112,7 +124,8 @@ def blocks_polydata(O=None, table=None):
                    {"displacement": _xyz(x - x0), "velocity": _xyz(pvel), "id": ids[owner]},
                    {"id": ids, "displacement": _xyz(d), "displacementMagnitude": np.hypot(d[:, 0], d[:, 1]),
                     "velocity": _xyz(vel), "angularVelocity": om, "rotation": cell[:, 7], "fixed": cell[:, 9].astype(np.int32),
-                    "mass": cell[:, 8], "stress": sig})
+                    "mass": cell[:, 8], "stress": sig,
+                    **_plastic_cells(plastic, any(hasattr(b.state, "plasticShear") for b in O.bodies if b is not None))})
     pd.GetPointData().SetActiveVectors("displacement")
     pd.GetCellData().SetActiveScalars("displacementMagnitude")
     return pd

@@ -19,7 +19,7 @@ CASES = [(0.2, False, 1), (0.45, True, 2), (0.3, True, 3), (0.0, False, 2), (0.4
 def test_plate_returns_material_constants(nu, plane_strain, seed):
     E, sigma = 1e9, 1e5
     args = {"n": 400, "seed": seed, "nu": nu, "planeStrain": plane_strain, "E": E, "sigma": sigma, "damping": 0.7, "tol": 2e-5, "densityScaling": True, "penalty": 200.0}
-    d = run_scene("plate", dict(args, deformable=True))
+    d = run_scene("plate", dict(args, deformable=True, tol=5e-6))  # (at rest to 5e-6: the blocks' mean strain to 1e-3)
     r = run_scene("plate", dict(args, deformable=False))
     print("nu=%g %s seed %d: deformable E %.4g (%+.2f %%) nu %.4f; rigid E %.4g (%+.2f %%) nu %.4f; dt ratio %.3f"
           % (nu, "plane strain" if plane_strain else "plane stress", seed, d["E"], 100 * (d["E"] / E - 1), d["nu"],

@@ -1,7 +1,8 @@
 """Energy of undamped deformable blocks (issue 38): a plate of Voronoi blocks (welded, as built) given random
 velocities, spins and strain rates floats freely without gravity or damping; O.energy's total (kinetic, the
 strain modes' kinetic energy, the joints' springs, the blocks' strain energy) must stay constant.
-Params: n, seed, steps, save (a path: save half-way, load and go on, compare with the uninterrupted run)."""
+With plastic blocks (param plastic = [c, φ, ψ]) their yield is in plastDissip and the balance still closes.
+Params: n, seed, steps, plastic, save (a path: save half-way, load and go on, compare with the uninterrupted run)."""
 import os, sys, random
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from _common import params, emit
@@ -12,6 +13,8 @@ from yade_rbsm.voronoi import voronoi_blocks
 p = params()
 rng = random.Random(p.get("seed", 1))
 mat = RbsmMat(young=1e8, poisson=p.get("nu", 0.25), density=2000, planeStrain=True, deformable=p.get("deformable", True), cohesion=1e9, tensileStrength=1e9)
+if "plastic" in p:  # yielding blocks (issue 39; the welded joints use no strength): c, φ, ψ = plastic
+    mat.plastic, mat.cohesion, mat.frictionAngle, mat.dilatancy = True, p["plastic"][0], p["plastic"][1], p["plastic"][2]
 O.materials.append(mat)
 size = p.get("size", 4.0)
 ids = [O.bodies.append(polygon2d(b, mat)) for b in voronoi_blocks([(0, 0), (size, 0), (size, size), (0, size)], n=p.get("n", 30), seed=p.get("seed", 1))]
@@ -30,7 +33,7 @@ for i in ids:
 
 
 def total():
-    return sum(O.energy[k] for k in O.energy.keys() if k in ("kinetic", "strainKinetic", "elastPotential", "strainElastic", "viscDamp"))
+    return sum(O.energy[k] for k in O.energy.keys() if k in ("kinetic", "strainKinetic", "elastPotential", "strainElastic", "viscDamp", "plastDissip"))
 
 
 def snapshot():
