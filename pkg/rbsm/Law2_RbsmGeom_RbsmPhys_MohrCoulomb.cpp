@@ -314,8 +314,21 @@ bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::go(shared_ptr<IGeom>& ig, shared_ptr<IP
 	return g.strainSides || p.welded ? deformableJoint(g, p, I) : joint<false>(g, p, I);
 }
 
-// (Out of line, so that go's own step for rigid joints is laid out for them alone.)
-[[gnu::noinline]] bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::deformableJoint(RbsmGeom& g, RbsmPhys& p, Interaction* I) { return joint<true>(g, p, I); }
+// (Out of line, so that go's own step for rigid joints is laid out for them alone.) A welded joint whose
+// blocks have both yielded beyond its weldBreakStrain is a crack from now on: a Mohr-Coulomb joint, found on
+// the blocks' strained shapes from the next step (Ig2), so that a failed mass can slide along it.
+[[gnu::noinline]] bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::deformableJoint(RbsmGeom& g, RbsmPhys& p, Interaction* I)
+{
+	if (p.welded && p.weldBreakStrain > 0) {
+		const auto& bodies  = scene->bodies->body;
+		auto        yielded = [&](Body::id_t id) {
+                        const DeformableState* ds = deformableState(bodies[size_t(id)]->state.get());
+                        return ds && ds->plasticShear > p.weldBreakStrain;
+		};
+		if (yielded(I->getId1()) && yielded(I->getId2())) p.welded = false;
+	}
+	return joint<true>(g, p, I);
+}
 
 template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& g, RbsmPhys& p, Interaction* I)
 {

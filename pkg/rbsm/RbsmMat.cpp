@@ -42,6 +42,7 @@ void RbsmMat::postLoad(RbsmMat& m)
 	require(std::isfinite(m.jointKn) && m.jointKn >= 0, m, "jointKn", m.jointKn, "must be a finite number >= 0 (0: Kawai's stiffness)");
 	require(std::isfinite(m.jointKs) && m.jointKs >= 0, m, "jointKs", m.jointKs, "must be a finite number >= 0 (0: Kawai's stiffness)");
 	require(std::isfinite(m.dilatancy) && m.dilatancy >= 0 && m.dilatancy < Mathr_PI / 2, m, "dilatancy", m.dilatancy, "must be in [0, pi/2) radians");
+	require(std::isfinite(m.weldBreakStrain) && m.weldBreakStrain >= 0, m, "weldBreakStrain", m.weldBreakStrain, "must be a finite plastic strain >= 0 (0: welded joints stay welded)");
 	require(std::isfinite(m.penalty) && m.penalty >= 1, m, "penalty", m.penalty, "must be a finite number >= 1 (a multiple of Kawai's joint stiffness)");
 }
 

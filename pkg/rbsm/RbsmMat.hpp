@@ -47,6 +47,11 @@ public:
 		((Real, dilatancy, 0, Attr::triggerPostLoad,
 			"Dilatancy angle ψ of plastic blocks [rad], in [0, π/2); used as min(ψ, frictionAngle). 0 (default, as Griffiths & Lane's strength reduction): "
 			"plastic flow keeps the block's area."))
+		((Real, weldBreakStrain, 0, Attr::triggerPostLoad,
+			"Plastic deformable blocks: a welded joint between two blocks whose :yref:`plasticShear<DeformableState.plasticShear>` both exceed this "
+			"becomes a Mohr-Coulomb joint of the material's strength (a crack of the continuum, along which a failed mass can slide and run out); "
+			"the criterion is the blocks' plastic shear because it is what a shear band accumulates and a uniformly stressed block does not localise "
+			"(≥ 0; 0, default: welded joints stay welded). Read when a joint is made (:yref:`RbsmPhys.weldBreakStrain`)."))
 		((Real, penalty, 100, Attr::triggerPostLoad,
 			"Deformable blocks: the stiffness of their joints' springs as a multiple of Kawai's (≥ 1): Kawai's h/E′ is the compliance "
 			"of a rigid block's half, which a deformable block carries in itself, so its side of a joint adds h/(penalty·E′). Larger is "

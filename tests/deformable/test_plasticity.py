@@ -5,8 +5,9 @@ frictionless platens carries the material's strength, 2c cos φ/(1 − sin φ), 
 plastic area, ψ = φ dilates it by the flow rule; the yield is in O.energy (plastDissip) and the balance closes;
 every way of setting the attributes works and a saved scene keeps the plastic state. Fails on ac21977 (no
 RbsmMat.plastic); the plate also failed there with the attribute added until the contact geometry followed welded
-joints as far as their blocks' strains move them (RbsmGeom.strainReach): at 0.6 % plastic strain the undeformed
-shapes drew apart, 118 of 265 welded joints were lost and the plateau fell 7-17 % below 2c."""
+joints as material points and found other contacts on the strained shapes (20227e2): at 0.6 % plastic strain the
+undeformed shapes drew apart, 118 of 265 welded joints were lost and the plateau fell 7-17 % below 2c. Welded joints of
+yielded blocks become cracks at RbsmMat.weldBreakStrain; strength reduction of plastic blocks finds the closed form."""
 import math
 import os
 import sys
@@ -70,6 +71,38 @@ def test_associated_flow_dilates_and_elastic_blocks_do_not_yield():
     assert "plastDissip" not in ela["energy"] or ela["energy"]["plastDissip"] == 0
 
 
+def test_welded_joints_of_yielded_blocks_become_cracks():
+    """RbsmMat.weldBreakStrain: a welded joint whose two blocks have both accumulated that much plastic shear becomes
+    a Mohr-Coulomb joint of the material (brittle here: its cohesion goes at the first slip, φ = 0), so the failed
+    plate comes apart and its load falls, where with welded joints it holds 2c (test above)."""
+    c = 1e5
+    r = run_scene("compression", {"n": 100, "seed": 1, "c": c, "phi": 0, "sigmaT": c, "steps": 80000, "strain": 0.02, "weldBreak": 0.01})
+    print("weldBreakStrain 0.01: peak %.4g (2c %.4g), last %.4g, welded %s" % (r["peak"], 2 * c, r["last"], r["welded"]))
+    assert r["peak"] == pytest.approx(2 * c, rel=0.1)  # the continuum's strength until the cracks form
+    assert r["welded"][1] < 0.6 * r["welded"][0]
+    assert r["last"] < 0.1 * 2 * c
+
+
+def reduced_strength(c, phi, F):
+    """2c' cos φ'/(1 − sin φ') of c' = c/F, tan φ' = tan φ/F: the plate's strength at the factor F."""
+    p = math.atan(math.tan(phi) / F)
+    return 2 * c / F * math.cos(p) / (1 - math.sin(p))
+
+
+@pytest.mark.parametrize("phi", [0, 20])
+def test_strength_reduction_of_plastic_blocks_finds_the_closed_form(phi):
+    """A plate under a constant end load q between frictionless platens: strength reduction (c/F, tan φ/F on the
+    blocks) must fail it where its reduced strength falls to q. Not a slope, so it
+    checks the blocks' part alone: every joint of the plate is welded."""
+    c, expected = 1e5, 1.5
+    q = reduced_strength(c, math.radians(phi), expected)  # the load the plate carries at F = 1.5 exactly
+    # (reducing c alone would give another F for phi > 0: 1.5 needs c and tan(phi) reduced together)
+    r = run_scene("srm_plate", {"c": c, "phi": phi, "q": q, "rtol": 0.01})
+    print("phi %g: strength reduction FS %.4f against %.4f (%+.2f %%): %s" % (phi, r["fs"], expected, 100 * (r["fs"] / expected - 1), r["text"]))
+    assert r["warnings"] == []
+    assert r["fs"] == pytest.approx(expected, rel=0.02)
+
+
 def test_energy_balance_closes_with_yielding_blocks():
     """Undamped plate of welded blocks with random velocities and strain rates, blocks weak enough to yield: the
     yield takes about a third of the initial energy, and the balance with plastDissip closes as for elastic blocks."""
@@ -96,6 +129,13 @@ out["refused"] = []
 for bad in (-0.1, 1.6, float("nan")):
     try:
         RbsmMat(dilatancy=bad)
+    except ValueError as e:
+        out["refused"].append(str(e))
+m.weldBreakStrain = 0.02
+out["weldBreak"] = [RbsmMat(weldBreakStrain=0.05).weldBreakStrain, m.weldBreakStrain, RbsmMat().weldBreakStrain]
+for bad in (-1e-3, float("inf")):
+    try:
+        m.weldBreakStrain = bad
     except ValueError as e:
         out["refused"].append(str(e))
 s = DeformableState(plasticStrain=(1e-3, -1e-3, 0), plasticShear=2e-3)
@@ -137,7 +177,9 @@ report(**out)
 def test_setting_and_saving_plastic_blocks(tmp_path):
     (r,) = run_ok(SETTING, workdir=str(tmp_path))
     assert r["ways"] == [True, 0.1, True, 0.2, True, 0.25, False, 0.0]
-    assert len(r["refused"]) == 3 and all("dilatancy" in m and "[0, pi/2)" in m for m in r["refused"])
+    assert len(r["refused"]) == 5 and all("dilatancy" in m and "[0, pi/2)" in m for m in r["refused"][:3])
+    assert all("weldBreakStrain" in m and ">= 0" in m for m in r["refused"][3:])
+    assert r["weldBreak"] == [0.05, 0.02, 0.0]
     assert r["state_ctor"] == [[1e-3, -1e-3, 0], 2e-3]
     assert "readonly" in r  # yieldMode is the integrator's to set
     mode, shear, eps_p, other, f = r["after"]

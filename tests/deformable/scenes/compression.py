@@ -3,7 +3,8 @@ frictionless platens at a constant (slow, damped) rate, free at top and bottom. 
 so the plate's strength is the material's: plane strain Mohr-Coulomb under uniaxial stress, q = 2c cos φ/(1 − sin φ)
 (Tresca: 2c). Reports the nominal stress-strain curve (platen force / H t against platen displacement / W),
 its peak and last value, the blocks' mean stress, how many yielded, the area change, and the energy balance.
-Params: n, seed, c, phi (deg), psi (deg), sigmaT, nu, planeStrain, plastic, strain (final), steps, damping."""
+Params: n, seed, c, phi (deg), psi (deg), sigmaT, nu, planeStrain, plastic, weldBreak (RbsmMat.weldBreakStrain),
+ductile, strain (final), steps, damping."""
 import math, os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from _common import params, emit
@@ -17,7 +18,7 @@ E, nu = p.get("E", 1e8), p.get("nu", 0.3)
 c, phi = p.get("c", 1e5), math.radians(p.get("phi", 0.0))
 mat = RbsmMat(young=E, poisson=nu, density=2000, planeStrain=p.get("planeStrain", True), cohesion=c, frictionAngle=phi,
               tensileStrength=p.get("sigmaT", c), dilatancy=math.radians(p.get("psi", 0.0)), deformable=True,
-              plastic=p.get("plastic", True), label="soil")
+              plastic=p.get("plastic", True), weldBreakStrain=p.get("weldBreak", 0.0), ductile=p.get("ductile", False), label="soil")
 platen = RbsmMat(young=E, poisson=nu, density=2000, frictionAngle=0, label="platen")
 O.materials.append(mat)
 O.materials.append(platen)
