@@ -8,7 +8,8 @@ The bearing pressure q (footing force / B t) rises to the collapse pressure; Pra
     build/yade-rbsm -j1 -n -x scripts/prandtl_footing_study.py '{"cells": "triangles", "h": 0.1}'
 
 Params (one JSON object): cells (voronoi | triangles | quads), h (/ B), seed, penalty (RbsmMat.penalty, 10),
-linearShare (of the welded joints, default Ip2's 1/penalty), steps, settlement (final, / B).
+linearShare (of the welded joints, default Ip2's 1/penalty), steps, settlement (final, / B), png (a picture of the
+blocks coloured by plastic shear at the end).
 Prints the curve q/c against settlement/B and the last fifth's mean."""
 import json
 import math
@@ -95,5 +96,8 @@ for k in range(60):
 tail = [q for _, q in curve[48:]]
 print("cells %s, h %g B, %d blocks, penalty %g, linearShare %s: q/c at settlement/B" % (kind, h0, len(ids), soil.penalty, p.get("linearShare", "1/penalty")))
 print("  " + "  ".join("%.3f:%.2f" % s for s in curve[4::8]))
+if p.get("png"):  # the mechanism: blocks coloured by their plastic shear
+    from yade_rbsm.snapshots import snapshot
+    snapshot(p["png"], title="footing, %s, settlement %.3f B: plastic shear" % (kind, curve[-1][0]), field="plasticShear")
 print("RESULT " + json.dumps({"cells": kind, "h": h0, "n": len(ids), "q_over_c": sum(tail) / len(tail), "prandtl": 2 + math.pi,
                               "yielded": sum(1 for i in ids if O.bodies[i].state.plasticShear > 0), "dt": O.dt}))

@@ -37,6 +37,24 @@ def view(joints=True, geometry=False, size=None):
     return v
 
 
+def color_blocks(field="plasticShear", vmax=None, cmap="magma", O=O):
+    """Colours every free Polygon2D block in the qt view by *field* ("plasticShear": the band of plastic
+    deformable blocks; "displacement" since refPos), through matplotlib's *cmap* from 0 to *vmax* (default the
+    largest value); fixed blocks keep their colour. Returns vmax. To follow a run, a PyRunner:
+    ``PyRunner(command="import yade_rbsm.gui; yade_rbsm.gui.color_blocks()", iterPeriod=200)``."""
+    from matplotlib import colormaps
+    from . import omega
+    from .snapshots import block_values
+    values = block_values(field, O)
+    free = {i: v for i, v in values.items() if not omega.is_fixed(O.bodies[i])}
+    top = vmax if vmax is not None else max(max(free.values(), default=0.0), 1e-12)
+    colors = colormaps[cmap]
+    for i, v in free.items():
+        r, g, b, _ = colors(min(1.0, max(0.0, v / top)))
+        O.bodies[i].shape.color = (r, g, b)
+    return top
+
+
 def _compress(png):
     """Qt writes uncompressed PNGs (2 MB for 1100 x 600); PIL, if there, makes them ~100 times smaller."""
     try:

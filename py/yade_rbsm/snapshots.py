@@ -1,6 +1,7 @@
 """PNG snapshots of an RBSM scene (matplotlib, Agg): blocks coloured by displacement magnitude
-(|pos - refPos|), fixed blocks grey, failed joints red (slipping somewhere, ductile joints with their
-cohesion too, or broken and open), like the seed paper's Fig. 5-6."""
+(|pos - refPos|) or by the plastic shear of plastic deformable blocks (the band of a mechanism), fixed blocks
+grey, failed joints red (slipping somewhere, ductile joints with their cohesion too, or broken and open), like
+the seed paper's Fig. 5-6."""
 import math
 
 from . import omega
@@ -38,8 +39,27 @@ def failed_joints(O=None):
     return segs
 
 
-def snapshot(path, title="", vmax=None, O=None, slip=None, dpi=110):
-    """Write a PNG of the scene to *path*; *slip*: optional polyline drawn dashed. Returns path."""
+FIELDS = {"displacement": "displacement [m]", "plasticShear": "plastic shear strain [-]"}
+
+
+def block_values(field, O=None):
+    """{body id: value} of *field* for every Polygon2D body: "displacement" (|pos − refPos| [m]) or
+    "plasticShear" (DeformableState.plasticShear, 0 for rigid blocks)."""
+    if O is None:
+        from yade import O
+    if field not in FIELDS:
+        raise ValueError("unknown field %r: one of %s" % (field, ", ".join(sorted(FIELDS))))
+    out = {}
+    for b in O.bodies:
+        if b is None or type(b.shape).__name__ != "Polygon2D":
+            continue
+        out[b.id] = (b.state.pos - b.state.refPos).norm() if field == "displacement" else getattr(b.state, "plasticShear", 0.0)
+    return out
+
+
+def snapshot(path, title="", vmax=None, O=None, slip=None, dpi=110, field="displacement"):
+    """Write a PNG of the scene to *path*; *slip*: optional polyline drawn dashed; *field*: what colours the
+    free blocks, "displacement" or "plasticShear" (block_values). Returns path."""
     if O is None:
         from yade import O
     import matplotlib
@@ -50,7 +70,8 @@ def snapshot(path, title="", vmax=None, O=None, slip=None, dpi=110):
     polys = block_polygons(O)
     free = [p for p in polys if not p[3]]
     fixed = [p for p in polys if p[3]]
-    disp = [p[2] for p in free]
+    values = block_values(field, O) if field != "displacement" else None
+    disp = [p[2] if values is None else values[p[0]] for p in free]
     vmax = vmax if vmax is not None else max(max(disp, default=0.0), 1e-6)
     # fixed margins instead of tight_layout, which measured every tick label and took half of the time
     fig, ax = plt.subplots(figsize=(9, 5), gridspec_kw=dict(left=0.07, right=0.94, bottom=0.1, top=0.93))
@@ -72,7 +93,7 @@ def snapshot(path, title="", vmax=None, O=None, slip=None, dpi=110):
     ax.set_aspect("equal")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
-    fig.colorbar(pc, ax=ax, label="displacement [m]", shrink=0.8, fraction=0.05, pad=0.02)
+    fig.colorbar(pc, ax=ax, label=FIELDS[field], shrink=0.8, fraction=0.05, pad=0.02)
     ax.set_title(title + ("  (red: failed joints, %d)" % len(segs)))
     fig.savefig(path, dpi=dpi)
     plt.close(fig)

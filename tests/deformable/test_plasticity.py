@@ -114,6 +114,7 @@ def test_energy_balance_closes_with_yielding_blocks():
 
 
 SETTING = r"""
+import os
 import yade_rbsm
 from yade_rbsm import polygon2d, omega
 out = {}
@@ -159,6 +160,15 @@ sx, sy, sxy = sa.stress
 mean, radius = (sx + sy) / 2, math.hypot((sx - sy) / 2, sxy)
 f = radius + mean * math.sin(soil.frictionAngle) - soil.cohesion * math.cos(soil.frictionAngle)
 out["after"] = [sa.yieldMode, sa.plasticShear, list(sa.plasticStrain), list(O.bodies[b].state.plasticStrain), f]
+from yade_rbsm import gui
+from yade_rbsm.snapshots import snapshot
+top = gui.color_blocks()  # the band in the qt view: brightest where the plastic shear is largest
+out["colors"] = [top, list(O.bodies[a].shape.color), list(O.bodies[b].shape.color), max(sa.plasticShear, O.bodies[b].state.plasticShear)]
+out["png"] = os.path.getsize(snapshot("band.png", field="plasticShear"))
+try:
+    gui.color_blocks("strain")
+except ValueError as e:
+    out["bad_field"] = str(e)
 O.save("plastic.yade.gz")
 O.save("plastic.xml")
 report(**out)
@@ -186,6 +196,9 @@ def test_setting_and_saving_plastic_blocks(tmp_path):
     assert mode in (1, 2, 3) and shear > 0 and eps_p != [0, 0, 0]
     assert f <= 1e-9 * 1e3  # the stress after the step is on or inside Mohr-Coulomb
     assert r["updated"] == [1e-4, 0, 0] and other != [1e-4, 0, 0]  # set by updateAttrs; then b yields too
+    top, color_a, color_b, largest = r["colors"]
+    assert top == largest and color_a != color_b  # coloured by plastic shear, from 0 to the largest
+    assert r["png"] > 10000 and "strain" in r["bad_field"] and "plasticShear" in r["bad_field"]
     (l,) = run_ok(LOAD, workdir=str(tmp_path))
     for f in ("plastic.yade.gz", "plastic.xml"):
         assert l[f][:3] == [mode, shear, eps_p] and l[f][3:] == [True, 0.1]
