@@ -51,6 +51,13 @@ void BlockStrainIntegrator::action()
 		}
 		const Real scale  = scales && size_t(b->id) < scales->size() ? (*scales)[size_t(b->id)] : 1;
 		const Real torque = stepBlock(*b, *ds, *poly, *mat, b->state->isDamped ? damping : 0, scale, e);
+		const Vector3r& s = ds->strain; // its largest principal strain in magnitude
+		if (const Real largest = std::abs(s[0] + s[1]) / 2 + std::hypot((s[0] - s[1]) / 2, s[2] / 2); !(largest <= maxStrain)) {
+			std::ostringstream msg;
+			msg << "strains by " << largest << " (principal), beyond maxStrain = " << maxStrain
+			    << " of the small-strain element: its material is too weak or too soft for its loads (plastic shear " << ds->plasticShear << ")";
+			rbsm_report::stopForBody(blockReports, *scene, "BlockStrainIntegrator", b->id, msg.str());
+		}
 		corrections.push_back({ b->id, torque - scene->forces.getTorque(b->id).z() });
 	}
 	for (const Torque& t : corrections) // (after the pass: an addTorque unsyncs the container)

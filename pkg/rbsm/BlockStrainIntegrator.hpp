@@ -28,6 +28,7 @@ public:
 		"A fixed block (all DOFs blocked) keeps its strain. Place it right before :yref:`NewtonIntegrator` (yade_rbsm.engines() does "
 		"when a material is deformable); it does nothing while no DeformableState exists. Under yade.mpy it integrates its rank's "
 		"blocks (Body.subdomain), as NewtonIntegrator does.",
+		((Real, maxStrain, 0.5, , "Largest principal strain (in magnitude) a block may reach [-]: the constant-strain element and its strained shape are small-strain kinematics, so a block strained beyond stops the run with a message naming it (a plastic block too weak for its loads flows without bound: a 3 mm block of a random pile reached 700 % and exploded). > 0."))
 		((long, deformableSeen, -1, (Attr::readonly | Attr::noSave), "DeformableState objects alive at the last check of the joints' strainSides (a change: the joints are marked again).")),
 		/*ctor*/,
 		/*py*/

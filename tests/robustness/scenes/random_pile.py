@@ -16,6 +16,8 @@ n = p.get("n", 300)
 smin, smax = p.get("size_min", 0.05), p.get("size_max", 5.0)
 rock = RbsmMat(young=p.get("E", 1e7), poisson=0.2, density=2500, frictionAngle=math.radians(p.get("phi", 30)), cohesion=0, tensileStrength=0)
 rock.deformable = p.get("deformable", False)  # (issue 38: the same pile of deformable blocks)
+if p.get("plastic"):  # (issue 39: blocks that yield, of cohesion c = plastic [Pa])
+    rock.plastic, rock.cohesion = True, p["plastic"]
 O.materials.append(rock)
 
 
@@ -77,8 +79,13 @@ def total():
 t_end, max_steps, every = p.get("t_end", 1.0), p.get("steps", 10**6), p.get("every", 100)
 E0 = None
 worst, gw, left, finite, dts = 0.0, 0.0, 0, True, []
+stopped = False
 while O.time < t_end and O.iter < max_steps:
+    before = O.iter
     O.run(every, True)
+    if O.iter - before < every:  # a check stopped the run (reported on the terminal)
+        stopped = True
+        break
     if E0 is None:
         E0 = total()
     finite = finite and all_finite(O)
@@ -92,4 +99,6 @@ left = sum(1 for i in ids if not (-0.01 < O.bodies[i].state.pos[0] < W + 0.01 an
 vmax = max(math.hypot(O.bodies[i].state.vel[0], O.bodies[i].state.vel[1]) for i in ids) if finite else float("inf")
 emit({"worst_growth": worst, "grav_work": gw, "left": left, "finite": finite, "time": O.time, "iter": O.iter,
       "first_dt": ts.firstContactDt, "crit_dt": ts.criticalDt, "dt_min": min(dts) if dts else None, "dt_max": max(dts) if dts else None, "vmax": vmax,
+      "stopped": stopped, "largest_strain": max((abs(b.state.strain[0] + b.state.strain[1]) / 2 + math.hypot((b.state.strain[0] - b.state.strain[1]) / 2, b.state.strain[2] / 2)
+                                                 for b in O.bodies if hasattr(b.state, "strain")), default=0.0),
       "energy": {k: O.energy[k] for k in O.energy.keys()}, "top": top, "drift": total() - E0 if E0 is not None else 0.0})
