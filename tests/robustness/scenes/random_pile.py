@@ -83,9 +83,7 @@ stopped = False
 while O.time < t_end and O.iter < max_steps:
     before = O.iter
     O.run(every, True)
-    if O.iter - before < every:  # a check stopped the run (reported on the terminal)
-        stopped = True
-        break
+    stopped = O.iter - before < every  # a check stopped the run (reported on the terminal): the last sample
     if E0 is None:
         E0 = total()
     finite = finite and all_finite(O)
@@ -95,6 +93,8 @@ while O.time < t_end and O.iter < max_steps:
     growth = total() - E0
     worst = max(worst, growth)
     dts.append(O.dt)
+    if stopped:
+        break
 left = sum(1 for i in ids if not (-0.01 < O.bodies[i].state.pos[0] < W + 0.01 and O.bodies[i].state.pos[1] > -0.01 and O.bodies[i].state.pos[1] < top + 50))
 vmax = max(math.hypot(O.bodies[i].state.vel[0], O.bodies[i].state.vel[1]) for i in ids) if finite else float("inf")
 emit({"worst_growth": worst, "grav_work": gw, "left": left, "finite": finite, "time": O.time, "iter": O.iter,
