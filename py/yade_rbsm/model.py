@@ -176,7 +176,7 @@ class SlopeModel:
         optionally with the joint sets' strength divided by *strength_factor* (a trigger); a progress line
         by simulated time. Recorded: the largest displacement and the mean of the free blocks'."""
         from yade import O
-        from . import omega, slope
+        from . import mpi, omega, slope
         from .monitor import Monitor
         duration = number("SlopeModel.run", "duration", duration, 0, low_open=True)
         w0 = time.time()
@@ -187,8 +187,8 @@ class SlopeModel:
         mon = Monitor(ids=[], period=period, progress=progress, reset=False)
         mon.target(time=duration)
         t_end = O.time + duration
-        while O.time < t_end * (1 - 1e-12):
-            O.run(max(1, min(500, int((t_end - O.time) / O.dt) + 1)), True)
+        while O.time < t_end * (1 - 1e-12):  # as settle does: an error of a step raises (O.run can lose it)
+            mpi.run(max(1, min(500, int((t_end - O.time) / O.dt) + 1)))
         d = [(O.bodies[i].state.pos - O.bodies[i].state.refPos).norm() for i in ids]
         return self._record("dynamic", dict(duration=duration, strength_factor=strength_factor, damping=damping),
                             dict(max_displacement=max(d) if d else 0.0, mean_displacement=sum(d) / len(d) if d else 0.0,

@@ -38,7 +38,7 @@ import sys
 SYNC_LABEL = "rbsmMpiSync"
 SYNC_COMMAND = "__import__('yade_rbsm.mpi').mpi.sync()"
 
-_refused = None  # (rank, message) of the last refusal sync() raised on every rank
+_refused = None  # (rank that refused, message raised here) of the last refusal sync() raised on every rank
 _alone = False  # to_serial() was called: this rank (0) goes on without the others
 
 
@@ -116,10 +116,8 @@ def sync():
         if ts is not None:
             ts.error = ""
         rank = next(r for r, m in enumerate(msgs) if m)
-        _refused = (rank, msgs[rank])
-        if err:
-            raise RuntimeError(err)
-        raise RuntimeError("yade-rbsm: the step was refused on rank %d; every rank stops: %s" % (rank, msgs[rank]))
+        _refused = (rank, err or "yade-rbsm: the step was refused on rank %d; every rank stops: %s" % (rank, msgs[rank]))
+        raise RuntimeError(_refused[1])
     if math.isfinite(glob[1]) and int(glob[1]) != O.stopAtIter:
         O.stopAtIter = int(glob[1])
 
@@ -202,6 +200,8 @@ def mpirun(steps, with_merge=False):
                          "so that the other ranks do not wait for it:\n%s" % (mp.rank, traceback.format_exc()))
         sys.stderr.flush()
         mp.comm.Abort(1)
+    if _refused is not None:  # raised in the run's first step, lost by YADE's O.wait() (the run ended before it)
+        raise RuntimeError(_refused[1])
     if _O().iter < end:  # stopped early: a report of the plugin on some rank (the sync stops every rank there)
         raise RuntimeError("yade-rbsm: the run was stopped at step %d by an error of the plugin, printed on stderr "
                            "by the rank that found it (as yade_rbsm.advance raises serially)" % _O().iter)

@@ -15,6 +15,8 @@ pwave         a block 1 cm above a base, O.dt = 0.5 × PWaveTimeStep() with set_
               must be refused (no joint exists yet).
 check_new     set_dt=False at a step just below the limit of a block resting on a base; a second block
               falls onto it: the step that makes the stiffer joint must be refused.
+refusal_load  check_new's refusal `tries` times (one step each) while `busy` busy-looping processes compete for
+              the cores: how many refusals were not raised.
 dt_zero       O.dt = 0 with set_dt=False.
 nu_half       ν = 0.5 − 1e-15 (plane strain): refused by RbsmMat's constructor and assignment; then the
               scene with the kept ν = 0.2 and contact damping 0.3 runs.
@@ -28,7 +30,7 @@ flat_drop     a 1 × 0.5 m block (E = 2e8 Pa, ρ = 2400) dropped flat from `drop
 import os, sys, math
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from _common import params, emit, all_finite
-from yade_rbsm import polygon2d, engines
+from yade_rbsm import polygon2d, engines, advance
 
 p = params()
 case = p["case"]
@@ -59,8 +61,10 @@ def stepper():
 
 
 def run_catching(n):
+    """The exception of *n* steps run in the calling thread (yade_rbsm.advance), None if they ran: O.run(n, True)
+    loses an exception raised in the run's first step when the background run ends before O.wait() starts."""
     try:
-        O.run(n, True)
+        advance(n)
         return None
     except Exception as e:
         return [type(e).__name__, str(e)]
@@ -154,6 +158,22 @@ elif case == "check_new":
     res["exc"] = run_catching(2000)
     res["iter"] = O.iter
     res["contacts"] = O.interactions.has(1, 2) and O.interactions[1, 2].isReal
+elif case == "refusal_load":
+    import subprocess
+    O.bodies.append(polygon2d(rect(-1, 0.0, 2, 1), mat))
+    O.bodies.append(polygon2d(rect(-0.1, 1.002, 0.2, 0.2), mat))
+    O.engines = engines(set_dt=True)
+    O.step()
+    ts = stepper()
+    ts.setDt = False
+    O.dt = 0.8 * ts.criticalDt
+    busy = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(p.get("busy", 3))]
+    try:
+        res["lost"] = sum(run_catching(1) is None for _ in range(p.get("tries", 300)))
+    finally:
+        for b in busy:
+            b.kill()
+    res["iter"] = O.iter
 elif case == "dt_zero":
     O.bodies.append(polygon2d(rect(-0.5, 0.0, 1, 1), mat))
     O.engines = engines(set_dt=False)
