@@ -15,7 +15,7 @@ inline bool fixedBlock(const State& s) { return (s.blockedDOFs & State::DOF_ALL)
 /// Polygon2D block): a free translation with a mass that is not a finite number > 0, a free rotation
 /// about z with such an inertia, an orientation out of the x-y plane (or not finite), a position or
 /// velocity that is not finite. Read-only and cheap (no allocation when fine): called for every body
-/// at every step by RbsmTimeStepper, which reports it by body id and stops the run after the step.
+/// at every step by RbsmTimeStepper, which refuses the step naming the body (before NewtonIntegrator).
 std::string blockStateProblem(const Body& b);
 
 /// True for the usual block (free in x, y and about z, finite positive mass and inertia, finite pose

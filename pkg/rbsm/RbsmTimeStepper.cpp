@@ -92,7 +92,6 @@ namespace {
 	}
 
 	std::atomic<int> motionReports { 0 };
-	std::atomic<int> blockStateReports { 0 };
 }
 
 void RbsmTimeStepper::postLoad(RbsmTimeStepper&)
@@ -538,12 +537,14 @@ long RbsmTimeStepper::jointEdits() { return RbsmPhys::edits.load(std::memory_ord
 // State, Shape and Bound from memory: two passes cost 39 ns per contact-step, one 29 ns).
 // - issue 15: a reshaped block gets the mass of its new shape, and a mass or inertia set by a
 //   script, or a block fixed or released, is seen (ReshapedBlocks.hpp); a block whose state the
-//   model cannot integrate is reported by id and the run stops after this step (BlockStateCheck.hpp),
-//   without the estimate that follows, which would throw without naming the body: false then.
+//   model cannot integrate refuses the step by id before NewtonIntegrator (BlockStateCheck.hpp), so the
+//   scene stays as it was (integrated, a massless block's position became NaN), without the estimate
+//   that follows, which would throw without naming the body: false then.
 // - watchBody (unless watchLater): the collider trigger and the motion check, which read the velocities.
 bool RbsmTimeStepper::checkBlocks(bool watchLater, Real& travelDt, bool& runCollider)
 {
-	bool bad = false;
+	std::string refusal; // of the first bad block
+	long        bad = 0;
 	reshapedIds.clear();
 	for (const auto& b : scene->bodies->body) {
 		if (!b) continue;
@@ -551,19 +552,23 @@ bool RbsmTimeStepper::checkBlocks(bool watchLater, Real& travelDt, bool& runColl
 		if (!(b->state && blockStateSurelyFine(*b->state))) { // (the usual block, without a call)
 			const std::string problem = blockStateProblem(*b);
 			if (!problem.empty()) {
-				rbsm_report::stopForBody(blockStateReports, *scene, "RbsmTimeStepper", b->id, problem);
-				bad = true;
+				if (bad++ == 0) refusal = "RbsmTimeStepper: body #" + std::to_string(b->id) + " " + problem;
 				continue;
 			}
 		}
 		if (changed) reshapedIds.push_back(b->id);
 		else if (!watchLater) watchBody(*b, travelDt, runCollider);
 	}
+	if (bad) {
+		if (bad > 1) refusal += " (and " + std::to_string(bad - 1) + " other block" + (bad > 2 ? "s" : "") + ")";
+		refuseStep(refusal + " at step " + std::to_string(scene->iter) + "; the step was refused before integration.", deferErrors, error);
+		return false;
+	}
 	// a lighter block may need a shorter step now, its joints were made anew (their phys again,
 	// without a new iterMadeReal) and its inner radius changed: a full estimate now (a mass set by
 	// hand: 0.1 x mid-interval tore a bonded joint before the next estimate)
-	if (!bad && !reshapedIds.empty()) lastCheck = -1;
-	return !bad;
+	if (!reshapedIds.empty()) lastCheck = -1;
+	return true;
 }
 
 // A full estimate every interval steps and whenever what it read has changed; in between, the joints

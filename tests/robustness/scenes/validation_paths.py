@@ -6,7 +6,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from _common import params, emit, all_finite  # noqa: E402
-from yade_rbsm import polygon2d, engines  # noqa: E402
+from yade_rbsm import polygon2d, engines, advance  # noqa: E402
 
 case = params()["case"]
 nan = float("nan")
@@ -29,8 +29,10 @@ def attempt(f):
 
 
 def run(n):
+    """n steps in the calling thread (yade_rbsm.advance: O.run(n, True) can lose an exception of its first step);
+    the exception, if any, in out["exc"]."""
     it = O.iter
-    O.run(n, True)
+    out["exc"] = attempt(lambda: advance(n))
     out["steps"] = O.iter - it
     out["finite"] = all_finite(O)
 
@@ -91,11 +93,16 @@ elif case.startswith("state_"):
     else:
         s.inertia = (v, v, v)
     out["iter_before"] = O.iter
+    before = (tuple(s.pos), tuple(s.vel), s.angVel[2])
     run(100)
+    out["unchanged"] = before == (tuple(s.pos), tuple(s.vel), s.angVel[2])
 elif case == "rotated_out_of_plane":
-    O.bodies[2].state.ori = Quaternion((1, 0, 0), 0.3)
+    s = O.bodies[2].state
+    s.ori = Quaternion((1, 0, 0), 0.3)
     out["iter_before"] = O.iter
+    before = (tuple(s.pos), tuple(s.vel), s.angVel[2])
     run(100)
+    out["unchanged"] = before == (tuple(s.pos), tuple(s.vel), s.angVel[2])
 elif case == "reshape_in_contact":
     # an octagon resting on the base, reshaped into a triangle mid-run while in contact
     O.resetThisScene()
