@@ -25,6 +25,19 @@ inline void refuseStep(const std::string& message, bool deferErrors, std::string
 	kept = message;
 }
 
+// A scene split by yade.mpy whose stepper does not defer its errors runs without yade_rbsm's sync engine:
+// each rank would take its own O.dt and the ranks drift apart silently (item 2 of issue 34: the master at
+// t = 3e-6 s against 0.146 s serially). Refused on every rank at its first step (each rank throws: the job
+// ends unless every rank's O.run loses its exception, see scene.advance).
+inline void requireSyncEngine(bool split, bool deferErrors)
+{
+	if (!split || deferErrors) return;
+	throw std::runtime_error("RbsmTimeStepper: this scene is split by yade.mpy but runs without yade_rbsm's sync engine: every rank "
+	                         "would choose its own O.dt and the ranks would drift apart. "
+	                           "Build the engines with yade_rbsm.engines(mpi=True) (the default when yade.mpy is imported before engines()), "
+	                           "or run with yade_rbsm.mpi.mpirun, which adds it.");
+}
+
 // A refusal still kept at the next step: no sync engine took it, and the step it refused has run.
 inline void throwUnclaimedRefusal(std::string& kept)
 {

@@ -541,7 +541,8 @@ long RbsmTimeStepper::jointEdits() { return RbsmPhys::edits.load(std::memory_ord
 //   scene stays as it was (integrated, a massless block's position became NaN), without the estimate
 //   that follows, which would throw without naming the body: false then.
 // - watchBody (unless watchLater): the collider trigger and the motion check, which read the velocities.
-bool RbsmTimeStepper::checkBlocks(bool watchLater, Real& travelDt, bool& runCollider)
+// - split: yade.mpy's Subdomain bodies are in the scene (the master of a split scene has them too).
+bool RbsmTimeStepper::checkBlocks(bool watchLater, Real& travelDt, bool& runCollider, bool& split)
 {
 	std::string refusal; // of the first bad block
 	long        bad = 0;
@@ -555,6 +556,7 @@ bool RbsmTimeStepper::checkBlocks(bool watchLater, Real& travelDt, bool& runColl
 				if (bad++ == 0) refusal = "RbsmTimeStepper: body #" + std::to_string(b->id) + " " + problem;
 				continue;
 			}
+			split = split || (b->flags & Body::FLAG_SUBDOMAIN); // (massless: never a usual block)
 		}
 		if (changed) reshapedIds.push_back(b->id);
 		else if (!watchLater) watchBody(*b, travelDt, runCollider);
@@ -643,7 +645,9 @@ void RbsmTimeStepper::action()
 	const bool watchLater  = densityScaling && made != jointsSeen;
 	Real       travelDt    = std::numeric_limits<Real>::infinity();
 	bool       runCollider = false;
-	if (!checkBlocks(watchLater, travelDt, runCollider)) return;
+	bool       split       = scene->subdomain > 0;
+	if (!checkBlocks(watchLater, travelDt, runCollider, split)) return;
+	requireSyncEngine(split, deferErrors);
 	updateBounds(made);
 	if (watchLater)
 		for (const auto& b : bodies) {

@@ -81,7 +81,7 @@ public:
 		((Real, scaledDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "The step density scaling runs at [s] (targetDt, or the median block's step), from the last full estimate."))
 		((std::vector<Real>, massScale, , Attr::readonly, "Per body id: the factor s ≥ 1 applied to its inertia by densityScaling (1: none; empty when off)."))
 		((bool, massScaled, false, Attr::hidden, "densityScaling as of the last step (a switch makes a full estimate at once)."))
-		((bool, deferErrors, false, , "Distributed runs (set by yade_rbsm.engines(mpi=True)): a refused step is not thrown here but kept in :yref:`error<RbsmTimeStepper.error>` (O.dt untouched), and yade_rbsm.mpi's sync engine, which must follow this one, raises it on every rank before NewtonIntegrator. An error still kept when this engine runs again (no sync engine took it) is thrown then."))
+		((bool, deferErrors, false, , "Distributed runs (set by yade_rbsm.engines(mpi=True)): a refused step is not thrown here but kept in :yref:`error<RbsmTimeStepper.error>` (O.dt untouched), and yade_rbsm.mpi's sync engine, which must follow this one, raises it on every rank before NewtonIntegrator. An error still kept when this engine runs again (no sync engine took it) is thrown then. A yade.mpy worker (Scene.subdomain > 0) without it refuses its first step: each rank would choose its own O.dt."))
 		((std::string, error, "", Attr::noSave, "The refusal kept by :yref:`deferErrors<RbsmTimeStepper.deferErrors>` at this step (empty: none); the sync engine reads and clears it."))
 		((Real, stepDt, std::numeric_limits<Real>::infinity(), (Attr::readonly | Attr::noSave), "The step chosen at the last run [s]: min(stableDt, maxDt, the travel limit of maxStepMotion); what setDt sets (inf: no block of this rank bounds it). Under yade.mpy the sync engine sets O.dt to its minimum over the ranks."))
 		((bool, orderInteractions, true, , "Sort the interactions by body ids, in the container and in memory (MemoryOrder.hpp), once, at the first step of this engine that has interactions (so also right after O.load). The collider makes them in sweep order and O.load interleaves them with the bodies, which made a contact-step 1.3-1.7x slower at 10^4-10^5 blocks (docs/benchmarks.md). An interaction held elsewhere (a Python variable) keeps its object. False: YADE's order, as before; results differ by the order of summation only."))
@@ -112,7 +112,7 @@ private:
 	inline void watchBody(const Body& b, Real& travelDt, bool& runCollider); // the motion watch of one block
 	void        takeScriptDt(); // an O.dt set from outside since this engine set it: setDt off
 	void        reportMotion(const Body& b, Real motion, Real r); // (the rare path, out of the loop)
-	bool checkBlocks(bool watchLater, Real& travelDt, bool& runCollider); // the pass over the bodies; false: a bad block, the run stops
+	bool checkBlocks(bool watchLater, Real& travelDt, bool& runCollider, bool& split); // the pass over the bodies; false: a bad block, the step refused
 	void updateBounds(long made);
 	void chooseStep(Real travelDt);
 	void scaleMasses();

@@ -12,6 +12,9 @@ else:
     from .blocks import polygon2d, polygon_properties  # noqa: F401
     from .scene import engines, critical_time_step, advance, time_stepper  # noqa: F401
     from .mixed import mixed_engines  # noqa: F401
+    from .mpi import abort_on_abnormal_exit as _abort_on_abnormal_exit
+
+    _abort_on_abnormal_exit()  # under mpiexec: an error on one rank ends the job, not a deadlock
 
 # submodules (import them explicitly): geometry (plane geometry, pure Python), omega (joints, free bodies,
 # engines by label), slope, safety (its parts: contact_safety, slip_surface, le_bridge), snapshots, limit_equilibrium, vtkexport (VTK

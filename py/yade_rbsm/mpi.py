@@ -19,7 +19,9 @@ every step. What RBSM needs on top of that, and this module adds:
 * :func:`mpirun`: ``yade.mpy.mpirun`` that checks the above and, when an error that no other rank
   knows about leaves the run on one rank (a Python error in a user's PyRunner, ...), aborts the MPI
   job (MPI_Abort) instead of leaving the other ranks waiting for it;
-* :func:`rank_states`, :func:`to_serial`: per-rank time and step; the merged scene made serial.
+* :func:`rank_states`, :func:`to_serial`: per-rank time and step; the merged scene made serial;
+* a script that ends with an error on one rank under ``mpiexec`` (a value refused before the run on that
+  rank alone) aborts the MPI job (:func:`abort_on_abnormal_exit`, set when the package is imported).
 
 Usage (the same script runs on every rank: ``mpiexec -n 3 yade-rbsm -n -x script.py``, or started
 plainly with ``mpy.initialize(3)`` at the top, which spawns the workers running the same script)::
@@ -40,6 +42,7 @@ SYNC_COMMAND = "__import__('yade_rbsm.mpi').mpi.sync()"
 
 _refused = None  # (rank that refused, message raised here) of the last refusal sync() raised on every rank
 _alone = False  # to_serial() was called: this rank (0) goes on without the others
+_exit_check = False  # abort_on_abnormal_exit() registered
 
 
 def _O():
@@ -120,6 +123,36 @@ def sync():
         raise RuntimeError(_refused[1])
     if math.isfinite(glob[1]) and int(glob[1]) != O.stopAtIter:
         O.stopAtIter = int(glob[1])
+
+
+def _abort_if_ended_early():
+    """At interpreter exit of a process that yade started in MPI mode: if MPI is still running, the script did
+    not end the way yade ends an MPI run (workers released by rank 0, then MPI_Finalize): it raised (yade -x
+    exits with status 1) or called sys.exit. The other ranks would wait for it for ever (this one too, in
+    MPI_Finalize's fence): abort the job instead."""
+    mp = sys.modules.get("yade.mpy")
+    if mp is None or mp.MPI.Is_finalized() or not mp.numThreads or mp.numThreads < 2:
+        return
+    sys.stdout.flush()
+    sys.stderr.write("yade-rbsm: rank %d: the script ended with an error; aborting the MPI job so that the other "
+                     "ranks do not wait for it (its traceback is above)\n" % mp.rank)
+    sys.stderr.flush()
+    mp.MPI.COMM_WORLD.Abort(1)
+
+
+def abort_on_abnormal_exit():
+    """Registers the exit check above once, in a process that yade runs in MPI mode (under ``mpiexec``, or a
+    worker spawned by ``mpy.initialize``); nothing elsewhere. Registered after mpi4py's own exit handler,
+    so it runs before MPI_Finalize."""
+    global _exit_check
+    import os
+
+    if _exit_check or os.getenv("OMPI_COMM_WORLD_RANK") is None:
+        return
+    import atexit
+
+    atexit.register(_abort_if_ended_early)
+    _exit_check = True
 
 
 def with_sync(engines):

@@ -87,3 +87,25 @@ def test_unknown_error_on_one_rank_aborts_the_job():
     assert "rank 1: an error ended the run on this rank only; aborting the MPI job" in r.output, r.tail()
     assert "a user error on one rank" in r.output
     assert r.wall < 30
+
+
+def test_error_on_one_rank_before_the_run_aborts_the_job():
+    """Issue 34, item 1: a value refused on one rank before the run (a ValueError in the script on rank 1 only)
+    left the other ranks waiting for ever in the run's first exchange (rank 1 waited in MPI_Finalize): killed
+    at the timeout. Now the job ends at once, exit status 1, naming the rank."""
+    r = _mpi({"case": "before", "runner": "rbsm"}, timeout=TIMEOUT)
+    assert r.returncode != 0
+    assert "RbsmTimeStepper.safetyFactor" in r.output
+    assert "rank 1: the script ended with an error; aborting the MPI job" in r.output, r.tail()
+    assert r.wall < 30
+
+
+def test_a_distributed_run_without_the_sync_engine_is_refused():
+    """Issue 34, item 2: engines() built before yade.mpy was imported (no sync engine) and YADE's own
+    mpy.mpirun drifted silently (each rank its own O.dt: master at t = 3e-6 s against 0.146 s serially). Now
+    every worker's RbsmTimeStepper refuses the first step, naming the fix, and the job ends."""
+    r = _mpi({"case": "nosync"}, timeout=TIMEOUT)
+    assert r.returncode != 0, r.tail()
+    assert "without yade_rbsm's sync engine" in r.output and "engines(mpi=True)" in r.output, r.tail()
+    assert r.wall < 30
+

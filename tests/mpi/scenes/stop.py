@@ -9,6 +9,9 @@ argv[1]: JSON {"mode": "serial" | "mpi" | "spawn", "case":
   "throw":  block 3 (rank 1) thrown down at 3 km/s: the stepper reports it (a block moving more than
             maxStepMotion in one step) and stops the run after the step;
   "user":   a user's PyRunner raises on rank 1 only (an error the plugin knows nothing about),
+  "before": a value refused on rank 1 only before the run (RbsmTimeStepper.safetyFactor = 5: ValueError),
+  "nosync": the engines built as before yade.mpy was imported (engines(mpi=False): no sync engine), plain
+            mpy.mpirun: each rank would choose its own O.dt,
  "steps": 100, "runner": "mpy" (mpy.mpirun) | "rbsm" (yade_rbsm.mpi.mpirun)}.
 Every rank that gets to the end prints its result: rank, O.iter, O.time, the exception of the run (if
 any, first 600 characters) and the wall time of the run.
@@ -51,7 +54,7 @@ for i in range(N):
     if mpi:
         b.subdomain = 1 if i < N // 2 else 2
     O.bodies.append(b)
-O.engines = engines(contact_damping=0.3)
+O.engines = engines(contact_damping=0.3, mpi=False if case == "nosync" else None)
 O.dt = 1e-4
 if case == "refuse":
     O.engines[3].setDt = False
@@ -59,6 +62,9 @@ if case == "refuse":
 if case == "user":
     cond = "__import__('yade.mpy').mpy.rank == 1" if mpi else "True"
     O.engines = O.engines + [PyRunner(iterPeriod=1, command="if O.iter == 20 and %s: raise ValueError('a user error on one rank')" % cond)]
+
+if case == "before" and mpi and mp.rank == 1:
+    O.engines[3].safetyFactor = 5.0  # refused: the script ends here on rank 1 only
 
 t0 = time.time()
 exc = None
@@ -75,4 +81,6 @@ try:
         mp.mpirun(p.get("steps", 100))
 except Exception as e:  # noqa: BLE001 - the test reads the message
     exc = str(e)[:600]
+    if case == "nosync":
+        raise  # as in a user's script: the error ends the script on this rank
 emit({"rank": mp.rank if mpi else 0, "iter": O.iter, "time": O.time, "exc": exc, "wall": time.time() - t0})
