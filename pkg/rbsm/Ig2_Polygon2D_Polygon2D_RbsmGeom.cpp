@@ -24,10 +24,12 @@ void Ig2_Polygon2D_Polygon2D_RbsmGeom::postLoad(Ig2_Polygon2D_Polygon2D_RbsmGeom
 	rbsm_report::checkContactAttributes("Ig2_Polygon2D_Polygon2D_RbsmGeom", nIP, interactionDistance);
 	if (!(std::isfinite(hysteresis) && hysteresis >= 0))
 		throw std::invalid_argument("Ig2_Polygon2D_Polygon2D_RbsmGeom.hysteresis: must be a finite number >= 0 (got " + std::to_string(hysteresis) + ")");
-	if (!(std::isfinite(updateTolerance) && updateTolerance >= 0 && updateTolerance < 0.1))
-		throw std::invalid_argument(
-		        "Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance: must be a finite fraction of the block size in [0, 0.1) (got "
-		        + std::to_string(updateTolerance) + "; 0 = exact geometry at every step)");
+	// The range the verification scenes were run in (tests/physics/test_update_tolerance.py); beyond it a
+	// runout strays: 3e-3 +0.6 %, 1e-2 -5 % (and gains 2.6 % of gravity's work), 0.09 -30 %.
+	if (!(std::isfinite(updateTolerance) && updateTolerance >= 0 && updateTolerance <= 1e-3))
+		throw std::invalid_argument("Ig2_Polygon2D_Polygon2D_RbsmGeom.updateTolerance: must be a fraction of the block size in [0, 0.001], "
+		                            "the range in which the verification answers hold (got "
+		                            + std::to_string(updateTolerance) + "; 0 = exact geometry at every step; 0.01 moved a runout by -5 %)");
 }
 
 namespace {

@@ -91,6 +91,7 @@ cases = {
     "ig2_updateTolerance_negative": lambda: attr_step(ig2o, "updateTolerance", -1e-4),
     "ig2_updateTolerance_nan": lambda: attr_step(ig2o, "updateTolerance", nan),
     "ig2_updateTolerance_large": lambda: attr_step(ig2o, "updateTolerance", 0.5),
+    "ig2_updateTolerance_unverified": lambda: attr_step(ig2o, "updateTolerance", 0.01),
     "law_dampingRatio_negative": lambda: attr_step(lawo, "dampingRatio", -0.5),
     "law_dampingRatio_nan": lambda: attr_step(lawo, "dampingRatio", nan),
 }

@@ -51,7 +51,7 @@ ATTRS = {
         "nIP": (lambda v: 1 <= v <= 8, [0, 1, 2, 3, 8, 9, -1]),
         "interactionDistance": (lambda v: math.isfinite(v) and v >= 0, REAL),
         "hysteresis": (lambda v: math.isfinite(v) and v >= 0, REAL),
-        "updateTolerance": (lambda v: 0 <= v < 0.1, REAL + [1e-4, 1e-2]),
+        "updateTolerance": (lambda v: 0 <= v <= 1e-3, REAL + [1e-4, 1e-3, 1e-2]),
     },
     "law": {"dampingRatio": (lambda v: math.isfinite(v) and v >= 0, REAL)},
     "ts": {"safetyFactor": (lambda v: 0 < v <= 1, REAL), "interval": (lambda v: v >= 1, [0, 1, 5, -3])},
