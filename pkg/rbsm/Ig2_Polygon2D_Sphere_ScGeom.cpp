@@ -7,12 +7,14 @@
 #include <pkg/common/Sphere.hpp>
 #include <pkg/dem/ScGeom.hpp>
 
+#include <sstream>
+
 namespace yade {
 
 YADE_PLUGIN((Ig2_Polygon2D_Sphere_ScGeom));
 
 namespace {
-	std::atomic<int> periodicReports { 0 }, materialReports { 0 }, planeReports { 0 };
+	std::atomic<int> periodicReports { 0 }, materialReports { 0 }, planeReports { 0 }, insideReports { 0 };
 }
 
 bool Ig2_Polygon2D_Sphere_ScGeom::go(
@@ -42,6 +44,15 @@ bool Ig2_Polygon2D_Sphere_ScGeom::go(
 		rbsm_report::stopForPair(planeReports, *scene, "Ig2_Polygon2D_Sphere_ScGeom", I->getId1(), I->getId2(),
 		                         "meet, but the sphere is free to leave the plane of the blocks (a sphere next to Polygon2D blocks "
 		                         "moves in their plane: set its state.blockedDOFs = 'zXY')");
+		return false;
+	}
+	// a centre already inside the block: the spring, compressed by more than the radius, would shoot the
+	// sphere out through whatever lies behind (a floor: 791 m/s, y = -562 m), silently
+	if (isNew && c.distance < 0) {
+		std::ostringstream msg;
+		msg << "meet with the sphere's centre inside the block (" << -c.distance << " m from its nearest edge, radius " << r
+		    << " m): place the sphere outside the block";
+		rbsm_report::stopForPair(insideReports, *scene, "Ig2_Polygon2D_Sphere_ScGeom", I->getId1(), I->getId2(), msg.str().c_str());
 		return false;
 	}
 	if (isNew && !rbsm_mixed::materialsAccepted(materialReports, *scene, "Ig2_Polygon2D_Sphere_ScGeom", *I, rbsm_mixed::Role::Block, rbsm_mixed::Role::Grain))

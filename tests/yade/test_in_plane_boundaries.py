@@ -85,3 +85,35 @@ def test_sphere_free_to_leave_the_plane_stops_the_run():
     (r,) = results(p)
     print(r)
     assert not r["stopped"] and r["z"] == 0 and abs(r["y"] - 0.2) < 0.01
+
+
+INSIDE = """
+from yade import O, utils, wrapper
+from yade_rbsm import polygon2d, mixed_engines, advance
+rock = wrapper.RbsmMat(density=2000)
+O.materials.append(rock)
+sand = wrapper.FrictMat(density=2000)
+O.materials.append(sand)
+O.bodies.append(polygon2d([(-2, -1), (2, -1), (2, 0), (-2, 0)], rock, fixed=True))
+O.bodies.append(polygon2d([(-0.5, 0), (0.5, 0), (0.5, 1), (-0.5, 1)], rock))
+s = utils.sphere(CENTRE, 0.2, material=sand)
+s.state.blockedDOFs = 'zXY'
+b = O.bodies.append(s)
+""" + RUN
+
+
+def test_sphere_starting_inside_a_block_stops_the_run():
+    """Item 3: a sphere whose centre starts inside a free block was shot through the fixed floor (y = -562 m,
+    791 m/s) without a word. The pair is named and the run stopped at the step they meet; a sphere only
+    touching the block (centre outside) still runs and rests on it."""
+    p = run_yade("CENTRE = (0.1, 0.45, 0)\n" + INSIDE)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    (r,) = results(p)
+    out = p.stdout + p.stderr
+    print(r, [l for l in out.splitlines() if "yade-rbsm" in l][:2])
+    assert r["stopped"] and re.search(r"#1 and #2", out) and "centre inside" in out, out[-2000:]
+    assert r["y"] > 0
+    p = run_yade("CENTRE = (0.1, 1.2, 0)\n" + INSIDE)
+    (r,) = results(p)
+    print(r)
+    assert not r["stopped"] and 1.15 < r["y"] < 1.21
