@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <iterator>
 #include <sstream>
 #include <utility>
@@ -30,6 +31,29 @@ namespace {
 	}
 }
 
+namespace {
+	// Once per process, at the first joint: a hand-built engine list without the plugin's step checks runs
+	// any O.dt (1000 x the stable step exploded, 0 stood still) and lets unhandled pairs pass, silently.
+	void warnOfMissingChecks(const Scene& scene)
+	{
+		bool stepper = false, pairCheck = false;
+		for (const auto& e : scene.engines) {
+			if (!e) continue;
+			const std::string name = e->getClassName();
+			stepper                = stepper || name == "RbsmTimeStepper";
+			pairCheck              = pairCheck || name == "RbsmPairCheck";
+		}
+		std::string missing;
+		if (!stepper)
+			missing += " RbsmTimeStepper (nothing checks O.dt against the stable step of the joints: a larger one explodes, "
+			           "O.dt = 0 stands still; nor the blocks' states and motions);";
+		if (!pairCheck) missing += " RbsmPairCheck (a pair that no functor handles, e.g. a sphere and a block, passes through silently);";
+		if (missing.empty()) return;
+		std::cerr << "yade-rbsm: WARNING: O.engines lacks" + missing
+		                     + " yade_rbsm.engines() has both (RbsmTimeStepper, then RbsmPairCheck, before NewtonIntegrator)\n";
+	}
+}
+
 void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shared_ptr<Material>& b2, const shared_ptr<Interaction>& I)
 {
 	if (I->phys) return; // properties are set once, when the joint forms
@@ -40,7 +64,7 @@ void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shar
 // then does not pay for the saved registers and stack frame of this body.)
 [[gnu::noinline]] void Ip2_RbsmMat_RbsmMat_RbsmPhys::makePhys(const shared_ptr<Material>& b1, const shared_ptr<Material>& b2, const shared_ptr<Interaction>& I)
 {
-	jointsMade.fetch_add(1, std::memory_order_relaxed);
+	if (jointsMade.fetch_add(1, std::memory_order_relaxed) == 0) warnOfMissingChecks(*scene);
 	const auto* g = dynamic_cast<const RbsmGeom*>(I->geom.get());
 	if (!g) {
 		// A point contact of YADE's sphere laws (a sphere of RbsmMat against a block, a wall or a sphere):
