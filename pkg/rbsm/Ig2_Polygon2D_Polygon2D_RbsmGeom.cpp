@@ -5,7 +5,6 @@
 #include <pkg/rbsm/StepReport.hpp>
 #include <core/Scene.hpp>
 #include <pkg/rbsm/kernel/ContactMemory.hpp>
-#include <pkg/rbsm/kernel/CriticalTimeStep.hpp>
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/kernel/EdgeContact.hpp>
 #include <pkg/rbsm/kernel/FrozenContact.hpp>
@@ -88,20 +87,7 @@ namespace {
 	// Overlaps deeper than this fraction of the smaller block are outside what the small-strain
 	// joint springs represent: reported (a few times per run), like UDEC's "contact overlap too great".
 	constexpr Real   deepOverlap = 0.05;
-	std::atomic<int> deepOverlapReports { 0 }, tunnelReports { 0 };
-	// An overlap deeper than the thinner block is thick (twice its inner radius): a block has passed into
-	// or through it within a step (a 1 mm wall hit at 50 m/s was passed, with overlap warnings only).
-	bool stopTunnelling(Scene& scene, const Interaction& I, const Polygon2D& A, const Polygon2D& B, Real overlap)
-	{
-		const Real thickness = 2 * std::min(rbsm::centroidInradius(A.vertices), rbsm::centroidInradius(B.vertices));
-		if (!(overlap > thickness)) return false;
-		std::ostringstream msg;
-		msg << "overlap by " << overlap << " m, more than the thinner block is thick (" << thickness
-		    << " m): one has passed into or through the other within a step (tunnelling); shorten the step "
-		       "(RbsmTimeStepper.maxDt, or O.dt with setDt=False)";
-		rbsm_report::stopForPair(tunnelReports, scene, "Ig2_Polygon2D_Polygon2D_RbsmGeom", I.getId1(), I.getId2(), msg.str().c_str());
-		return true;
-	}
+	std::atomic<int> deepOverlapReports { 0 };
 	void             reportDeepOverlap(const Interaction& I, Real overlap, Real size, bool atSetUp, long iter)
 	{
 		rbsm_report::limited(deepOverlapReports, [&](bool last) {
@@ -285,8 +271,7 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 		const auto& bodies  = scene->bodies->body;
 		const long  born    = std::max(bodies[I->getId1()]->iterBorn, bodies[I->getId2()]->iterBorn);
 		const bool  atSetUp = !existing && scene->iter <= std::max(born, 0L);
-		if (atSetUp || !stopTunnelling(*scene, *I, A, B, std::max(c.d0, c.d1)))
-			reportDeepOverlap(*I, std::max(c.d0, c.d1), pair.minSize, atSetUp, scene->iter);
+		reportDeepOverlap(*I, std::max(c.d0, c.d1), pair.minSize, atSetUp, scene->iter);
 	}
 	return true;
 }

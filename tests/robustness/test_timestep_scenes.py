@@ -89,17 +89,6 @@ def test_check_mode_refuses_a_step_a_new_contact_cannot_survive():
     assert r["iter"] <= 2
 
 
-def test_a_block_tunnelling_through_a_thin_wall_stops_the_run():
-    """Issue 34, item 7: a block thrown at 50 m/s at a fixed wall 1 mm thick passed through it (x = 151 m after
-    3000 steps) with overlap warnings only: the motion check compares a block's move with its own size. An
-    overlap deeper than the thinner block's thickness stops the run, naming the pair, before it is through."""
-    r, out = run_scene("timestep_cases", dict(case="thin_wall"), output=True)
-    print(r)
-    assert r["exc"] is not None and "stopped at step" in r["exc"][1]
-    assert "tunnelling" in out and "bodies #1 and #2" in out
-    assert r["x"] < 3.0
-
-
 def test_a_refused_first_step_is_never_lost_under_load():
     """CI on d8d0bdb: check_new's refusal came back as no error at all (iter 1, exc None). YADE 2023.02a's
     O.run(n, True) loses an exception of the run's first step when the background run ends before O.wait()

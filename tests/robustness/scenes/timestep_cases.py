@@ -15,8 +15,6 @@ pwave         a block 1 cm above a base, O.dt = 0.5 × PWaveTimeStep() with set_
               must be refused (no joint exists yet).
 check_new     set_dt=False at a step just below the limit of a block resting on a base; a second block
               falls onto it: the step that makes the stiffer joint must be refused.
-thin_wall     a 1 x 1 m block thrown at 50 m/s (no gravity, engines() defaults) at a fixed wall 1 mm thick and
-              2 m tall standing on the base 1 m ahead: where the run ends, the block's x, how it ended.
 refusal_load  check_new's refusal `tries` times (one step each) while `busy` busy-looping processes compete for
               the cores: how many refusals were not raised.
 dt_zero       O.dt = 0 with set_dt=False.
@@ -176,14 +174,6 @@ elif case == "refusal_load":
         for b in busy:
             b.kill()
     res["iter"] = O.iter
-elif case == "thin_wall":
-    O.bodies.append(polygon2d(rect(2, 0.0, 1e-3, 2), mat, fixed=True))
-    b = O.bodies[O.bodies.append(polygon2d(rect(0, 0.0, 1, 1), mat))]
-    b.state.vel = (50, 0, 0)
-    O.engines = engines(gravity=(0, 0, 0))
-    res["exc"] = run_catching(3000)
-    res["iter"] = O.iter
-    res["x"] = b.state.pos[0]
 elif case == "dt_zero":
     O.bodies.append(polygon2d(rect(-0.5, 0.0, 1, 1), mat))
     O.engines = engines(set_dt=False)
