@@ -29,9 +29,7 @@ namespace {
 		rbsm_report::stopForPair(geomReports, scene, "Ip2_RbsmMat_RbsmMat_RbsmPhys", I.getId1(), I.getId2(),
 		                         ("have a " + I.geom->getClassName() + " contact, which it cannot give properties (only RbsmGeom and ScGeom)").c_str());
 	}
-}
 
-namespace {
 	// Once per process, at the first joint: a hand-built engine list without the plugin's step checks runs
 	// any O.dt (1000 x the stable step exploded, 0 stood still) and lets unhandled pairs pass, silently.
 	void warnOfMissingChecks(const Scene& scene)

@@ -142,8 +142,8 @@ def _abort_if_ended_early():
 
 def abort_on_abnormal_exit():
     """Registers the exit check above once, in a process that yade runs in MPI mode (under ``mpiexec``, or a
-    worker spawned by ``mpy.initialize``); nothing elsewhere. Registered after mpi4py's own exit handler,
-    so it runs before MPI_Finalize."""
+    worker spawned by ``mpy.initialize``); nothing elsewhere. mpi4py finalizes MPI after Python's exit
+    handlers, so the check runs while MPI is up."""
     global _exit_check
     import os
 

@@ -57,7 +57,8 @@ def test_wall_in_the_plane_stops_the_run():
     assert "axis" in out and "plane of the blocks" in out
 
 
-SPHERE = """
+# a fixed base of RbsmMat and a FrictMat for the sphere
+SPHERE_BASE = """
 from yade import O, utils, wrapper
 from yade_rbsm import polygon2d, mixed_engines, advance
 rock = wrapper.RbsmMat(density=2000)
@@ -65,6 +66,9 @@ O.materials.append(rock)
 sand = wrapper.FrictMat(density=2000)
 O.materials.append(sand)
 O.bodies.append(polygon2d([(-2, -1), (2, -1), (2, 0), (-2, 0)], rock, fixed=True))
+"""
+
+SPHERE = SPHERE_BASE + """
 s = utils.sphere((0, 0.2, 0), 0.2, material=sand)
 if DOFS is not None:
     s.state.blockedDOFs = DOFS
@@ -87,14 +91,7 @@ def test_sphere_free_to_leave_the_plane_stops_the_run():
     assert not r["stopped"] and r["z"] == 0 and abs(r["y"] - 0.2) < 0.01
 
 
-INSIDE = """
-from yade import O, utils, wrapper
-from yade_rbsm import polygon2d, mixed_engines, advance
-rock = wrapper.RbsmMat(density=2000)
-O.materials.append(rock)
-sand = wrapper.FrictMat(density=2000)
-O.materials.append(sand)
-O.bodies.append(polygon2d([(-2, -1), (2, -1), (2, 0), (-2, 0)], rock, fixed=True))
+INSIDE = SPHERE_BASE + """
 O.bodies.append(polygon2d([(-0.5, 0), (0.5, 0), (0.5, 1), (-0.5, 1)], rock))
 s = utils.sphere(CENTRE, 0.2, material=sand)
 s.state.blockedDOFs = 'zXY'
