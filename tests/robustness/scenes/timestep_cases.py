@@ -167,7 +167,9 @@ elif case == "refusal_load":
     ts = stepper()
     ts.setDt = False
     O.dt = 0.8 * ts.criticalDt
-    busy = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(p.get("busy", 3))]
+    # busy loops that end by themselves within 2 min, should this process die before it kills them
+    spin = "import time\nend = time.time() + 120\nwhile time.time() < end: pass"
+    busy = [subprocess.Popen([sys.executable, "-c", spin]) for _ in range(p.get("busy", 3))]
     try:
         res["lost"] = sum(run_catching(1) is None for _ in range(p.get("tries", 300)))
     finally:
