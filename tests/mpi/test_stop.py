@@ -103,7 +103,7 @@ def test_error_on_one_rank_before_the_run_aborts_the_job():
 def test_a_distributed_run_without_the_sync_engine_is_refused():
     """Issue 34, item 2: engines() built before yade.mpy was imported (no sync engine) and YADE's own
     mpy.mpirun drifted silently (each rank its own O.dt: master at t = 3e-6 s against 0.146 s serially). Now
-    every worker's RbsmTimeStepper refuses the first step, naming the fix, and the job ends."""
+    every rank's RbsmTimeStepper refuses the first step, naming the fix, and the job ends."""
     r = _mpi({"case": "nosync"}, timeout=TIMEOUT)
     assert r.returncode != 0, r.tail()
     assert "without yade_rbsm's sync engine" in r.output and "engines(mpi=True)" in r.output, r.tail()

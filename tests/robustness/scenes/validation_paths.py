@@ -28,13 +28,16 @@ def attempt(f):
         return [type(e).__name__, str(e)]
 
 
-def run(n):
+def run(n, watch=None):
     """n steps in the calling thread (yade_rbsm.advance: O.run(n, True) can lose an exception of its first step);
-    the exception, if any, in out["exc"]."""
+    the exception, if any, in out["exc"]; with a State `watch`, whether its pose and velocity are unchanged."""
     it = O.iter
+    before = (tuple(watch.pos), tuple(watch.vel), watch.angVel[2]) if watch is not None else None
     out["exc"] = attempt(lambda: advance(n))
     out["steps"] = O.iter - it
     out["finite"] = all_finite(O)
+    if watch is not None:
+        out["unchanged"] = before == (tuple(watch.pos), tuple(watch.vel), watch.angVel[2])
 
 
 def energy():
@@ -93,16 +96,12 @@ elif case.startswith("state_"):
     else:
         s.inertia = (v, v, v)
     out["iter_before"] = O.iter
-    before = (tuple(s.pos), tuple(s.vel), s.angVel[2])
-    run(100)
-    out["unchanged"] = before == (tuple(s.pos), tuple(s.vel), s.angVel[2])
+    run(100, watch=s)
 elif case == "rotated_out_of_plane":
     s = O.bodies[2].state
     s.ori = Quaternion((1, 0, 0), 0.3)
     out["iter_before"] = O.iter
-    before = (tuple(s.pos), tuple(s.vel), s.angVel[2])
-    run(100)
-    out["unchanged"] = before == (tuple(s.pos), tuple(s.vel), s.angVel[2])
+    run(100, watch=s)
 elif case == "reshape_in_contact":
     # an octagon resting on the base, reshaped into a triangle mid-run while in contact
     O.resetThisScene()
