@@ -28,9 +28,7 @@ ap.add_argument("--time", type=float, default=0.4, help="simulated time after th
 ap.add_argument("--stay", action="store_true", help="keep the view open (no picture, no exit)")
 args = ap.parse_args(sys.argv[1:])
 
-from yade import log  # noqa: E402
-log.setLevel("InteractionLoop", log.ERROR)  # one warning per joint that separates
-log.setLevel("InsertionSortCollider", log.ERROR)
+yr.quiet_yade_warnings()  # one warning per joint that separates
 
 surface = [(0.0, 2.0), (6.0, 2.0), (14.0, 12.0), (24.0, 12.0)]
 psi = math.radians(35.0)

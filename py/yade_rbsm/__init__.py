@@ -10,7 +10,7 @@ except ImportError:
     pass
 else:
     from .blocks import polygon2d, polygon_properties  # noqa: F401
-    from .scene import engines, critical_time_step, advance, time_stepper  # noqa: F401
+    from .scene import engines, critical_time_step, advance, time_stepper, quiet_yade_warnings  # noqa: F401
     from .mixed import mixed_engines  # noqa: F401
     from .mpi import abort_on_abnormal_exit as _abort_on_abnormal_exit
 

@@ -21,12 +21,13 @@ import time
 from dataclasses import asdict, dataclass, field
 from typing import Dict, List
 
-from .checks import number
+from .checks import count, number
 
 __all__ = ["Stage", "SlopeModel"]
 
 _TAG = "yade_rbsm.stages"
 _BLOCKS_TAG = "yade_rbsm.slope_blocks"
+_PROGRESS = "rbsmStageProgress"  # the label of a stage's own progress line (PyRunner)
 
 
 @dataclass
@@ -36,6 +37,7 @@ class Stage:
     figures: Dict[str, object] = field(default_factory=dict)
     time: float = 0.0  # O.time at its end [s]
     wall: float = 0.0  # [s]
+    estimates: List[list] = field(default_factory=list)  # [method, FS or None, note]: rows of fs_table()
 
     def __str__(self):
         def fmt(v):
@@ -60,9 +62,9 @@ class SlopeModel:
         self.stages: List[Stage] = []
 
     # --- the record -----------------------------------------------------------------------------
-    def _record(self, name, settings, figures, w0):
+    def _record(self, name, settings, figures, w0, estimates=()):
         from yade import O
-        st = Stage(name, settings, figures, O.time, time.time() - w0)
+        st = Stage(name, settings, figures, O.time, time.time() - w0, [list(r) for r in estimates])
         self.stages.append(st)
         O.tags[_TAG] = json.dumps([asdict(s) for s in self.stages], default=str)
         return st
@@ -76,6 +78,8 @@ class SlopeModel:
             m.stages = [Stage(**d) for d in json.loads(O.tags[_TAG])]
         if _BLOCKS_TAG in O.tags.keys():
             m.sb = _Blocks(json.loads(O.tags[_BLOCKS_TAG]))
+        free = _blocks(O)
+        m.material = free[0].material if free else None  # (limit equilibrium reads the blocks' material)
         return m
 
     def __repr__(self):
@@ -91,6 +95,10 @@ class SlopeModel:
                 s.name, ", ".join("%s = %s" % kv for kv in s.settings.items()),
                 ", ".join("%s = %s" % (k, ("%.4g" % v) if isinstance(v, float) else v) for k, v in s.figures.items()),
                 s.time, s.wall))
+        rows = [r for s in self.stages for r in s.estimates]
+        if rows:
+            out += ["", "## Factors of safety", "", "| method | FS | note |", "|---|---|---|"]
+            out += ["| %s | %s | %s |" % (m, "-" if f is None else "%.3f" % f, note) for m, f, note in rows]
         text = "\n".join(out) + "\n"
         if path:
             with open(path, "w") as f:
@@ -98,39 +106,93 @@ class SlopeModel:
         return text
 
     # --- the stages -----------------------------------------------------------------------------
-    def build(self, **engines_kw):
+    def build(self, distribute=False, dt=None, bond_dt=None, **engines_kw):
         """The blocks into O.bodies, ``O.engines = engines(**engines_kw)``, every joint bonded (the joint
-        sets keep the rock's strength until :meth:`give_joint_sets`)."""
+        sets keep the rock's strength until :meth:`give_joint_sets`), the crack joints broken.
+        *distribute*: under yade.mpy (:func:`yade_rbsm.mpi.start`), the free blocks cut into vertical
+        slices, one per worker, before the joints are made (yade.mpy would make joints across its borders
+        anew, unbonded). *dt*: a fixed O.dt [s], refused above the stable step; by default the time stepper
+        keeps O.dt at its safety x the critical step as the joints change. *bond_dt*: the step [s] of the
+        bonding step (default the stepper's): a tiny one (1e-6) makes the joints before gravity has moved
+        the blocks by g dt^2. (It changes the path, and with it a jointed slope's strength-reduction FS by a
+        few per cent: 1.09 to 1.17 on the tutorial's slope for bonding steps of 0.001 to 0.8 x critical.)"""
         from yade import O
-        from . import slope
-        from .scene import engines
+        from . import mpi, slope
+        from .scene import critical_time_step, engines, time_stepper
         if self.sb is None or self.material is None:
             raise ValueError("SlopeModel.build: give the blocks and the material (SlopeModel(blocks, material))")
         w0 = time.time()
         slope.build_scene(self.sb, self.material, thickness=self.thickness)
         O.engines = engines(**engines_kw)
-        joints, broken = slope.bond_and_break(self.sb, give_sets=False)
+        figures = dict(blocks=len(self.sb.free), fixed=len(self.sb.blocks) - len(self.sb.free))
+        if distribute:
+            if mpi.distributed() is None:
+                raise ValueError("SlopeModel.build: distribute=True needs yade.mpy's ranks (yade_rbsm.mpi.start(n) first)")
+            slices = mpi.decompose_by_x()
+            mpi.distribute()
+            figures.update(ranks=mpi.distributed().numThreads, slices=[[round(a, 3), round(b, 3)] for a, b in slices])
+            if mpi.rank() == 0:
+                print("yade.mpy: %d ranks; free blocks cut into %d vertical slices (centroids x in %s), fixed blocks on "
+                      "rank 0" % (figures["ranks"], len(slices), ", ".join("[%.2f, %.2f]" % r for r in slices)), flush=True)
+        stepper = time_stepper()
+        set_dt = stepper.setDt
+        if bond_dt is not None:  # the bonding step at a step of its own, then the stepper's
+            stepper.setDt, O.dt = False, number("SlopeModel.build", "bond_dt", bond_dt, 0, low_open=True)
+        figures["joints"], figures["broken"] = slope.bond_and_break(self.sb, give_sets=False)
+        figures["critical_dt"] = critical_time_step()
+        if dt is not None:
+            stepper.setDt = False
+            O.dt = number("SlopeModel.build", "dt", dt, 0, low_open=True)  # (the stepper refuses it above the limit)
+        elif bond_dt is not None:
+            O.dt, stepper.setDt = stepper.safetyFactor * figures["critical_dt"] * (1 - 1e-9), set_dt
+        figures["dt"] = O.dt
         O.tags[_BLOCKS_TAG] = json.dumps(dict(pattern=self.sb.pattern, surface=[list(p) for p in self.sb.surface],
                                               base=self.sb.base))
-        return self._record("build", dict(engines_kw), dict(blocks=len(self.sb.free), joints=joints, broken=broken), w0)
+        return self._record("build", dict(engines_kw, distribute=distribute, dt=dt, bond_dt=bond_dt), figures, w0)
 
-    def settle(self, tol=1e-4, max_steps=100000, density_scaling=True, name="in-situ"):
-        """Gravity to an unbalanced-force ratio below *tol* (:func:`slope.settle`, damped, with density
-        scaling by default: the same equilibrium in fewer steps)."""
+    def settle(self, tol=1e-4, max_steps=100000, density_scaling=True, hold_friction=None, damping=0.7, check=200,
+               reset_displacements=True, progress=10.0, name="in-situ"):
+        """Gravity to an unbalanced-force ratio below *tol* (:func:`slope.settle`, NewtonIntegrator *damping*,
+        density scaling by default: the same equilibrium in fewer steps). *hold_friction*: tan(phi) of every
+        joint held at this value during the stage, then given back (a slope that fails at its own friction
+        reaches its initial stress state). *reset_displacements*: displacements count from the settled state
+        (State.refPos, UDEC's RESET disp). A line every *progress* s of wall time (None: none)."""
         from yade import O, Vector3
-        from . import omega, slope
+        from . import mpi, omega, slope
         w0 = time.time()
-        free = omega.free_bodies(O)
+        free = _blocks(O)
         before = {b.id: Vector3(b.state.pos) for b in free}  # (a copy: state.pos is the body's own)
-        ok, steps, ratio = slope.settle(tol=tol, max_steps=max_steps, check=200, density_scaling=density_scaling)
+        held = []
+        if hold_friction is not None:
+            hold_friction = number("SlopeModel.settle", "hold_friction", hold_friction, 0, low_open=True)
+            held = [(I, I.phys.tanPhi) for I in omega.joints(O)]
+            for I, _ in held:
+                I.phys.tanPhi = hold_friction
+        last = [time.time()]
+
+        def line(steps, ratio):
+            if progress is not None and time.time() - last[0] >= progress and mpi.rank() == 0:
+                last[0] = time.time()
+                print("  %s: step %d, unbalanced-force ratio %.2e (to %g), %.0f s wall" % (name, steps, ratio, tol,
+                                                                                          last[0] - w0), flush=True)
+        try:
+            ok, steps, ratio = slope.settle(tol=tol, max_steps=max_steps, check=check, damping=damping, progress=line,
+                                            density_scaling=density_scaling)
+        finally:
+            for I, tan_phi in held:
+                if I.isReal:
+                    I.phys.tanPhi = tan_phi
         moved = max(((O.bodies[i].state.pos - p).norm() for i, p in before.items()), default=0.0)
         size = sorted(2 * b.shape.circumradius for b in free)[len(free) // 2] if free else 0.0
-        st = self._record(name, dict(tol=tol, density_scaling=density_scaling),
+        if reset_displacements:
+            for b in O.bodies:
+                b.state.refPos = b.state.pos
+        st = self._record(name, dict(tol=tol, density_scaling=density_scaling, hold_friction=hold_friction, damping=damping),
                           dict(converged=bool(ok), steps=steps, unbalanced=ratio, max_displacement=moved), w0)
         if not ok:
             print("SlopeModel.%s: not settled in %d steps (unbalanced-force ratio %.2e > %g): the slope may be failing "
                   "at these strengths" % (name, steps, ratio, tol), flush=True)
-        elif moved > 0.1 * size:
+        elif moved > 0.1 * size and hold_friction is None:
             print("SlopeModel.%s: WARNING: settled, but a block moved %.3g m on the way (%.0f %% of the median block "
                   "size): the slope failed at these strengths and came to rest elsewhere" % (name, moved, 100 * moved / size),
                   flush=True)
@@ -162,34 +224,162 @@ class SlopeModel:
         st = self._record("pseudo-static", dict(kh=kh, kv=kv, towards=towards), dict(gravity=list(g)), w0)
         return self.settle(name="equilibrium") if settle else st
 
+    # --- factors of safety (rank 0 of a merged scene under yade.mpy) ------------------------------
     def fos(self, **kw):
-        """:func:`slope.fos` on the current state (the scene is left as it was); recorded."""
+        """:func:`slope.fos` on the current state (the scene is left as it was); recorded, its estimates
+        among :meth:`fs_table`'s rows."""
         from .fos import fos
         w0 = time.time()
         r = fos(self.sb, **kw)
+        rows = [["RBSM " + k if k == "strength reduction" else k, e["fs"], e["note"]] for k, e in r.estimates.items()]
         self._record("factor of safety", dict(kw), dict(fs=r.fs, method=r.method, conclusive=r.conclusive,
-                                                        warnings=len(r.warnings)), w0)
+                                                        warnings=len(r.warnings)), w0, rows)
         return r
 
-    def run(self, duration, strength_factor=None, damping=0.0, progress=10.0, period=200):
+    def contact_fs(self, polyline, name="slip polyline"):
+        """FS from the joint forces along *polyline* (:func:`safety.contact_fs`: the joints on it, shear
+        strength over shear force); recorded as "RBSM contact forces, *name*". Returns the ContactFS."""
+        from .safety import contact_fs
+        w0 = time.time()
+        r = contact_fs(polyline)
+        self._record("contact forces", dict(name=name), dict(fs=r.fs, shear=r.shear, normal=r.normal, joints=r.n_joints,
+                                                              length=r.length), w0,
+                     [["RBSM contact forces, " + name, r.fs, "T = %.1f kN/m, N = %.1f kN/m, %d joints"
+                       % (r.shear, r.normal, r.n_joints)]])
+        return r
+
+    def limit_equilibrium(self, polyline=None, circle=None, toe=None, search=None, n=50, g=9.81):
+        """Limit equilibrium on the blocks' ground with their material (gamma = rho g, c, phi:
+        :func:`safety.le_slope`): Fellenius on *polyline*, Fellenius and Bishop on *circle* (xc, yc, R) and
+        their critical circles through *toe* over the centre grid *search* (dict of x_range, y_range, nx,
+        ny, refine). Recorded; returns {method: Result, SearchResult or the message of its failure}."""
+        from .safety import le_slope, limit_equilibrium_summary
+        w0 = time.time()
+        lem = limit_equilibrium_summary(le_slope(self.sb.surface, self.material, g=g), circle=circle, polyline=polyline,
+                                        toe=toe, search=search, n=n)
+        rows = [[k, None if isinstance(v, str) else v.fs, _le_note(v)] for k, v in lem.items()]
+        settings = dict(circle=[round(v, 6) for v in circle] if circle else None, search=search)
+        self._record("limit equilibrium", settings, {k: r[1] for k, r in zip(lem, rows)}, w0, rows)
+        return lem
+
+    def probe(self, steps=300):
+        """The surface of slipping joints: an undamped *steps*-step probe from the current state (then
+        restored) collects the joints that slip (:func:`safety.probe_slipping_surface`); its FS from the
+        contact forces of the current state and by Fellenius along it continued to the ground
+        (:func:`safety.slip_surface_fs`). Recorded; returns the SlipSurfaceFS, or None if nothing slipped."""
+        from .safety import le_slope, probe_slipping_surface, slip_surface_fs
+        w0 = time.time()
+        ss, found, rows = probe_slipping_surface(steps=steps, damping=0.0), None, []
+        if ss is not None:
+            found = slip_surface_fs(ss, slope=le_slope(self.sb.surface, self.material))
+            fel = found.fellenius
+            rows = [["RBSM contact forces, found surface", found.contact.fs, "T = %.1f kN/m, N = %.1f kN/m, %d joints" % (
+                found.contact.shear, found.contact.normal, found.contact.n_joints)],
+                    ["Fellenius, found surface", None if isinstance(fel, str) else fel.fs, _le_note(fel)]]
+        self._record("slipping surface", dict(steps=steps), dict(joints=len(ss.joints) if ss else 0,
+                                                                  length=ss.length if ss else 0.0), w0, rows)
+        return found
+
+    def fs_table(self, extra=()):
+        """Every factor of safety the stages found, then the rows *extra* (method, FS, note), as a table."""
+        from .safety import fs_table
+        return fs_table([tuple(r) for s in self.stages for r in s.estimates] + list(extra))
+
+    # --- the dynamic stage ------------------------------------------------------------------------
+    def watch(self, ids, period=200, progress=10.0):
+        """Record the displacement of blocks *ids*, the kinetic energy, the unbalanced-force ratio and the
+        numbers of slipping and open joints every *period* steps through the stages that follow (yade.plot,
+        :class:`Monitor`, saved with :meth:`save_plot`), with a progress line every *progress* s of wall time."""
+        from .monitor import Monitor
+        self.monitor = Monitor(ids=ids, period=period, progress=progress)
+        return self.monitor
+
+    def save_plot(self, base, title="RBSM slope"):
+        """The watched series as *base*.png and *base*.txt (:meth:`watch`); returns the paths."""
+        return self.monitor.save(base, title)
+
+    def run(self, duration, strength_factor=None, damping=0.0, progress=10.0, period=200, chunks=1, snapshots=None,
+            slip=None, vtk=None, vtk_every=None, energy=True):
         """Dynamic stage of *duration* [s] of simulated time with NewtonIntegrator *damping* (0: none),
-        optionally with the joint sets' strength divided by *strength_factor* (a trigger); a progress line
-        by simulated time. Recorded: the largest displacement and the mean of the free blocks'."""
+        optionally with the joint sets' strength divided by *strength_factor* (a trigger), in *chunks*
+        parts: after each, a line (largest displacement, slipping and open joints) and, with *snapshots* (a
+        path prefix), a PNG (*prefix*_0_before.png, then _k_during.png, the last _k_after.png; *slip*: a
+        polyline drawn on them). *vtk*: a directory for a VTK series of the blocks and joints, written every
+        *vtk_every* s of simulated time (default at the chunks' ends). *energy* (undamped, serial): the
+        balance of O.energy over the stage (from the end of its first step) is printed and recorded.
+        A progress line by simulated time. Under yade.mpy every rank calls it; the scene is merged on
+        rank 0 after each chunk, where the lines, PNGs and VTK files are made. Recorded: the largest and
+        the mean displacement of the free blocks (since the last settle)."""
         from yade import O
         from . import mpi, omega, slope
+        from .dynamic_stage import DynamicOutputs
         from .monitor import Monitor
         duration = number("SlopeModel.run", "duration", duration, 0, low_open=True)
+        chunks = count("SlopeModel.run", "chunks", chunks)
         w0 = time.time()
         if strength_factor is not None:
             slope.apply_joint_sets(F=strength_factor)
         omega.newton(O).damping = damping
-        ids = [b.id for b in omega.free_bodies(O)]
-        mon = Monitor(ids=[], period=period, progress=progress, reset=False)
-        mon.target(time=duration)
-        t_end = O.time + duration
-        while O.time < t_end * (1 - 1e-12):  # as settle does: an error of a step raises (O.run can lose it)
-            mpi.run(max(1, min(500, int((t_end - O.time) / O.dt) + 1)))
-        d = [(O.bodies[i].state.pos - O.bodies[i].state.refPos).norm() for i in ids]
+        ids = [b.id for b in _blocks(O)]
+        split = mpi.distributed() is not None
+        mon = getattr(self, "monitor", None)
+        if not split:
+            if mon is None:  # a progress line only, for this stage
+                mon = Monitor(ids=[], period=period, progress=progress, reset=False, name="_rbsm_progress",
+                              label=_PROGRESS)
+            mon.mark(" dynamic stage")
+            mon.target(time=duration)
+        out = DynamicOutputs(ids, snapshots, slip, vtk, vtk_every, energy and damping == 0 and not split)
+        t0, iter0, figures = O.time, O.iter, {}
+        for k in range(chunks):
+            t_end = t0 + duration * (k + 1) / chunks
+            while O.time < t_end * (1 - 1e-12):  # as settle does: an error of a step raises (O.run can lose it)
+                mpi.run(max(1, min(500, int((t_end - O.time) / O.dt) + 1)))
+                out.started()
+            if split:
+                mpi.merge()
+            if mpi.rank() == 0:
+                figures = out.chunk(k, chunks, O.time - t0, w0)
+        figures.update(out.finish())
+        O.engines = [e for e in O.engines if getattr(e, "label", "") != _PROGRESS]
+        if split:  # (collective) the ranks' clocks, which the sync engine keeps together
+            states = mpi.rank_states()
+            figures["ranks_at"] = [[t, i] for t, i, _ in states]
+            if mpi.rank() == 0:
+                print("yade.mpy: ranks at t = %s s after %s steps" % (", ".join("%.9g" % t for t, i, dt in states),
+                                                                     ", ".join(str(i) for t, i, dt in states)), flush=True)
         return self._record("dynamic", dict(duration=duration, strength_factor=strength_factor, damping=damping),
-                            dict(max_displacement=max(d) if d else 0.0, mean_displacement=sum(d) / len(d) if d else 0.0,
-                                 steps=O.iter), w0)
+                            dict(figures, steps=O.iter - iter0), w0)
+
+    def to_json(self, path=None, blocks=False):
+        """The stages (and with *blocks* every free block's displacement since the last settle and its
+        rotation [rad]) as JSON, written to *path* if given; returns the text."""
+        from yade import O
+        from . import mpi
+        d = dict(stages=[asdict(s) for s in self.stages])
+        if blocks:
+            d.update(time=O.time, iter=O.iter, dt=O.dt, ranks=mpi.distributed().numThreads if mpi.distributed() else 1)
+            d["displacement"] = {str(b.id): list(b.state.pos - b.state.refPos)[:2] for b in _blocks(O)}
+            d["rotation"] = {str(b.id): b.state.ori.toAxisAngle()[1] * b.state.ori.toAxisAngle()[0][2]
+                             for b in _blocks(O)}
+        text = json.dumps(d, indent=1, default=str)
+        if path:
+            with open(path, "w") as f:
+                f.write(text + "\n")
+        return text
+
+
+def _blocks(O):
+    """The free Polygon2D blocks (not yade.mpy's Subdomain bodies)."""
+    from . import omega
+    return [b for b in omega.free_bodies(O) if type(b.shape).__name__ == "Polygon2D"]
+
+
+def _le_note(v):
+    """The note of a limit-equilibrium row: its forces, its circle, or why it failed."""
+    if isinstance(v, str):
+        return "failed: " + v
+    if hasattr(v, "n_valid"):  # SearchResult
+        return "%s; %d of %d toe circles valid" % (v.circle, v.n_valid, v.n_tried)
+    note = "T = %.1f kN/m, N = %.1f kN/m" % (v.shear, v.normal)
+    return note + (", %s" % v.surface if type(v.surface).__name__ == "Circle" else "")

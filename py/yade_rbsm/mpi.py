@@ -207,6 +207,28 @@ def decompose_by_x(workers=None, fixed_to_master=True):
     return ranges
 
 
+def start(ranks=0, quiet_workers=True):
+    """Collective: a distributed run of the calling script with yade.mpy. Under ``mpiexec -n N`` (or in a
+    worker yade.mpy spawned) the job's N ranks, and *ranks* must be 0 or N; started plainly, *ranks* (>= 2)
+    ranks: rank 0 spawns ranks - 1 workers running the same script (yade.mpy's ``initialize``). Waiting
+    ranks yield the CPU (3 ranks on 2 cores), and with *quiet_workers* only rank 0 prints (errors still
+    show: yade.mpy sends stderr to the terminal). Returns yade.mpy."""
+    import os
+    os.environ.setdefault("OMPI_MCA_mpi_yield_when_idle", "1")
+    from yade import mpy as mp
+    if not isinstance(ranks, int) or isinstance(ranks, bool) or ranks < 0:
+        raise ValueError("yade_rbsm.mpi.start: ranks must be an integer >= 0 (got %r)" % (ranks,))
+    if mp.numThreads is None or mp.numThreads < 2:  # not under mpiexec, not a spawned worker
+        if ranks < 2:
+            raise ValueError("yade_rbsm.mpi.start: give ranks >= 2 (got %d), or start the script with mpiexec -n N" % ranks)
+        mp.initialize(ranks)
+    elif ranks not in (0, mp.numThreads):
+        raise ValueError("yade_rbsm.mpi.start: ranks = %d but the job has %d MPI ranks" % (ranks, mp.numThreads))
+    if quiet_workers and mp.rank != 0:
+        sys.stdout = open(os.devnull, "w")
+    return mp
+
+
 def mpirun(steps, with_merge=False):
     """``yade.mpy.mpirun(steps, withMerge=with_merge)`` for an RBSM scene: before the first split it
     puts the sync engine after RbsmTimeStepper if ``O.engines`` lacks it (:func:`with_sync`); a

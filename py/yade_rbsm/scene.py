@@ -179,3 +179,12 @@ def time_stepper():
         return omega.engine("timeStepper")
     except LookupError:
         return None
+
+
+def quiet_yade_warnings():
+    """Keep only the errors of YADE's InteractionLoop and InsertionSortCollider: they warn "IGeomFunctor
+    returned false on existing interaction!" each time a joint separates (thousands of lines in a
+    landslide) and about verletDist in a scene without spheres."""
+    from yade import log
+    for name in ("InteractionLoop", "InsertionSortCollider"):
+        log.setLevel(name, log.ERROR)

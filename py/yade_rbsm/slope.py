@@ -96,6 +96,16 @@ class SlopeBlocks:
     def free(self):
         return [b for b in self.blocks if not b.fixed]
 
+    def nearest(self, points):
+        """The ids of the free blocks whose centroids are nearest to each of *points* (x, y), once built."""
+        cs = [(polygon_centroid(b.vertices), b.id) for b in self.free]
+        return [min(cs, key=lambda c: math.hypot(c[0][0] - x, c[0][1] - y))[1] for x, y in points]
+
+    def __repr__(self):
+        nfree = len(self.free)
+        return "SlopeBlocks(%s: %d free blocks, %d fixed; area %.3f m2 (closed form %.3f, slivers dropped %.2e))" % (
+            self.pattern, nfree, len(self.blocks) - nfree, sum(b.area for b in self.free), self.slope_area, self.dropped_area)
+
 
 def brick_blocks(surface, base, brick_w, brick_h, joints=(), crack=None, foundation=1.0, wall=1.0,
                  min_area=None, stagger=0.5, cracks=(), layers=(), sets=(), traces=()):

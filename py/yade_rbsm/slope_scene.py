@@ -386,7 +386,10 @@ def bond_and_break(sb, give_sets=True):
     else:
         O.step()
     counted = mpi.counted_here
-    _record_cuts(list(sb.joints) + list(sb.cracks) + [t for t, _ in sb.layers if t is not None])  # (the layers' tops cut too)
+    crack = []  # the bricks' crack (x = xc above yc) as a polyline: joints_on finds its joints after the wedge slid
+    if sb.crack is not None:
+        crack = [[(sb.crack[0], sb.crack[1]), (sb.crack[0], max(y for _, y in sb.surface))]]
+    _record_cuts(list(sb.joints) + list(sb.cracks) + crack + [t for t, _ in sb.layers if t is not None])  # (the layers' tops cut too)
     nj = sum(1 for I in O.interactions if I.isReal and counted(I))
     nb = break_crack(sb, counted=counted) + break_joints(sb.cracks, counted=counted)
     if give_sets:

@@ -2,7 +2,7 @@
 by mpiexec: the free blocks in two vertical slices, one per worker, the fixed ones on rank 0) gives the
 serial run's factor of safety and displacements.
 
-* With --sorted-loop (every block's joint forces summed in id order, serially as on the ranks) the
+* With --engines sorted_loop=True (every block's joint forces summed in id order, serially as on the ranks) the
   whole run (bonding, 800-step gravity stage, 0.05 s dynamic stage: 1057 steps) is the serial one
   bit for bit: factor of safety from the contact forces, unbalanced-force ratio, every displacement.
   Tolerance 1e-12 (relative for the FS, metres for the displacements): the same operations in the
@@ -29,17 +29,26 @@ def _serial(tmp, args):
     import subprocess
 
     out = tmp / "serial"
-    p = subprocess.run([launcher(), "-n", "-x", SCRIPT] + COMMON + args + ["--out", str(out), "--summary", str(tmp / "serial.json")],
+    p = subprocess.run([launcher(), "-n", "-x", SCRIPT] + COMMON + args + ["--out", str(out)],
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True, cwd=str(tmp), timeout=300)
     assert p.returncode == 0, p.stdout[-3000:]
-    return json.load(open(tmp / "serial.json")), p.stdout
+    return _summary(out), p.stdout
 
 
 def _mpi(tmp, args):
     out = tmp / "mpi"
-    r = run_mpi(SCRIPT, COMMON + args + ["--mpi", "--out", str(out), "--summary", str(tmp / "mpi.json")], timeout=300, cwd=str(tmp))
+    r = run_mpi(SCRIPT, COMMON + args + ["--mpi", "--out", str(out)], timeout=300, cwd=str(tmp))
     assert not r.timed_out and r.returncode == 0, r.tail()
-    return json.load(open(tmp / "mpi.json")), r.output
+    return _summary(out), r.output
+
+
+def _summary(out):
+    """The example's summary.json, with the figures of its stages on top (settle_*, fs_*)."""
+    d = json.load(open(out / "summary.json"))
+    stage = {s["name"]: s["figures"] for s in d["stages"]}
+    d.update(settle_steps=stage["in-situ"]["steps"], settle_ratio=stage["in-situ"]["unbalanced"],
+             fs_contact=stage["contact forces"]["fs"], fs_joints=stage["contact forces"]["joints"])
+    return d
 
 
 def _compare(s, m):
@@ -57,7 +66,7 @@ def _compare(s, m):
 @pytest.fixture(scope="module")
 def sorted_runs(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("landslide_sorted")
-    args = ["--time", "0.05", "--sorted-loop"]
+    args = ["--time", "0.05", "--engines", "sorted_loop=True"]
     return tmp, _serial(tmp, args), _mpi(tmp, args)
 
 
