@@ -182,7 +182,9 @@ class SlopeModel:
             for I, tan_phi in held:
                 if I.isReal:
                     I.phys.tanPhi = tan_phi
-        moved = max(((O.bodies[i].state.pos - p).norm() for i, p in before.items()), default=0.0)
+        moved = max(((O.bodies[i].state.pos - p).norm() for i, p in before.items()
+                     if O.bodies[i] is not None and mpi.owned(O.bodies[i])), default=0.0)
+        moved = -mpi.allreduce_min([-moved])[0]  # (yade.mpy: the largest over the ranks, each its own blocks)
         size = sorted(2 * b.shape.circumradius for b in free)[len(free) // 2] if free else 0.0
         if reset_displacements:
             for b in O.bodies:

@@ -47,6 +47,7 @@ def _summary(out):
     d = json.load(open(out / "summary.json"))
     stage = {s["name"]: s["figures"] for s in d["stages"]}
     d.update(settle_steps=stage["in-situ"]["steps"], settle_ratio=stage["in-situ"]["unbalanced"],
+             settle_moved=stage["in-situ"]["max_displacement"],
              fs_contact=stage["contact forces"]["fs"], fs_joints=stage["contact forces"]["joints"])
     return d
 
@@ -76,6 +77,8 @@ def test_sorted_bit_for_bit(sorted_runs):
     assert s["iter"] > 1000 and dmax > 1e-3  # the slope has moved
     assert fs_rel <= 1e-12 and disp <= 1e-12
     assert m["settle_ratio"] == pytest.approx(s["settle_ratio"], rel=1e-12)
+    # the gravity stage's largest displacement is over every rank's blocks (rank 0, holding none, said 0 m)
+    assert s["settle_moved"] > 1e-4 and m["settle_moved"] == pytest.approx(s["settle_moved"], rel=1e-12)
     assert m["dt"] == s["dt"]
 
 
