@@ -1,7 +1,8 @@
 """slope.fos() on slopes with a known answer (issue 37): one call on the settled scene, defaults only.
-  yade-rbsm -n -x fos_cases.py plane|voronoi
+  yade-rbsm -n -x fos_cases.py plane|voronoi|gl
 plane: Hoek & Bray's plane failure built by the joint-set cutter (jointset_plane.py's slope), FS 1.4818.
-voronoi: a c-phi slope cut into Voronoi blocks (a continuum): the design value is limit equilibrium's."""
+voronoi: a c-phi slope cut into Voronoi blocks (a continuum): the design value is limit equilibrium's.
+gl: Griffiths & Lane's slope cut into Voronoi blocks: the design value is Bishop's critical circle."""
 import json
 import math
 import sys
@@ -29,6 +30,15 @@ if case == "plane":
     traces = [sl.Trace([(xd, yd), (xc, yc)], cohesion=cb, friction_angle=30, ductile=True, name="bedding"),
               sl.Trace([(xc, yc), (xc, H)], friction_angle=20, ductile=True, name="tension crack")]
     sb = sl.jointset_blocks([(0, 0), (xt, 0), (xcrest, H), (35, H)], -4.0, traces=traces)
+elif case == "gl":  # Griffiths & Lane's 2:1 slope on a firm base at toe level (scripts/reference_slopes.py)
+    import os
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(sl.__file__)))), "scripts"))
+    from reference_slopes import GAMMA, ground, search, soil
+    from yade_rbsm import limit_equilibrium as le
+    closed = le.critical_circle(soil("gl"), **search("gl")).fs  # the reference search's minimum, 1.382
+    rock = wrapper.RbsmMat(young=1e8, poisson=0.3, density=GAMMA * 1e3 / 9.81, frictionAngle=math.radians(20), cohesion=1e4,
+                           tensileStrength=0, ductile=True)
+    sb = sl.voronoi_slope_blocks(ground("gl"), 0.0, spacing=2.0, seed=1)
 else:
     closed = None
     rock = wrapper.RbsmMat(young=1e8, poisson=0.3, density=2000, frictionAngle=math.radians(20), cohesion=2e4,
