@@ -178,6 +178,10 @@ def fos(sb=None, kind=None, d_fail=None, max_steps=None, patience=4, tol=1e-4, r
         sr = reduce(sr.hi, d_fail)  # (stricter: the failed end fails again, and the search goes down from it)
     settings.update(d_fail=round(d_fail, 6), d_fail_halved=halved)
     warnings = list(sr.warnings)
+    if sr.reference_ratio > 10 * tol and sr.fs >= 1:  # (below 1 it is the slope failing, as the FS says)
+        warnings.append("the state reduced was not in equilibrium at its own strengths (unbalanced-force ratio %.2e) "
+                        "though the FS found is %.3f >= 1: it was not settled (settle again after changing strengths)"
+                        % (sr.reference_ratio, sr.fs))
     estimates = {"strength reduction": dict(fs=sr.fs, note="bracket [%.4f stable, %.4f failed], %d trials%s%s" % (
         sr.lo, sr.hi, len(sr.trials), (", failing by " + sr.mechanism) if sr.mechanism else "",
         (", d_fail halved %d x to %.3g m (a stable end slid, then stopped)" % (halved, d_fail)) if halved else ""))}

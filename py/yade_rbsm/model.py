@@ -80,6 +80,7 @@ class SlopeModel:
             m.sb = _Blocks(json.loads(O.tags[_BLOCKS_TAG]))
         free = _blocks(O)
         m.material = free[0].material if free else None  # (limit equilibrium reads the blocks' material)
+        m.monitor = _saved_monitor(O)  # watch()'s recorder, saved in O.engines: save_plot() goes on with it
         return m
 
     def __repr__(self):
@@ -200,31 +201,37 @@ class SlopeModel:
                   flush=True)
         return st
 
-    def give_joint_sets(self, tol=1e-4):
-        """The joint sets' own strength (:func:`slope.give_joint_sets`), then equilibrium again."""
+    def give_joint_sets(self, **settle):
+        """The joint sets' own strength (:func:`slope.give_joint_sets`), then equilibrium again (:meth:`settle`
+        with the arguments *settle*, e.g. tol, max_steps)."""
         from . import slope
         w0 = time.time()
         n = slope.give_joint_sets(self.sb) if getattr(self.sb, "joint_sets", None) else 0
         self._record("joint strengths", {}, dict(joints_given=n), w0)
-        return self.settle(tol=tol, name="equilibrium")
+        return self.settle(**dict(dict(name="equilibrium"), **settle))
 
     def set_water(self, phreatic, joints="sets", unit_weight=9810.0, settle=True):
-        """Water in the joints (:func:`slope.set_water`), then equilibrium again (*settle*); recorded."""
+        """Water in the joints (:func:`slope.set_water`), then equilibrium again (*settle*: True, or a dict of
+        :meth:`settle`'s arguments); recorded."""
         from . import slope
         w0 = time.time()
         wet = slope.set_water(phreatic, joints=joints, unit_weight=unit_weight)
         self._record("water", dict(phreatic=[list(p) for p in phreatic] if phreatic is not None else None, joints=joints),
                      dict(joints_wet=wet), w0)
-        return self.settle(name="equilibrium") if settle and phreatic is not None else self.stages[-1]
+        return self._settle_again(settle) if settle and phreatic is not None else self.stages[-1]
 
     def set_seismic(self, kh, kv=0.0, towards=1, settle=True):
         """The pseudo-static load (:func:`slope.set_seismic`), then equilibrium under it (*settle*: a load
-        applied at once would also shake the slope, twice the static effect on an elastic spring); recorded."""
+        applied at once would also shake the slope, twice the static effect on an elastic spring; True, or a dict
+        of :meth:`settle`'s arguments); recorded."""
         from . import slope
         w0 = time.time()
         g = slope.set_seismic(kh, kv=kv, towards=towards)
         st = self._record("pseudo-static", dict(kh=kh, kv=kv, towards=towards), dict(gravity=list(g)), w0)
-        return self.settle(name="equilibrium") if settle else st
+        return self._settle_again(settle) if settle else st
+
+    def _settle_again(self, settle):
+        return self.settle(**dict(dict(name="equilibrium"), **(settle if isinstance(settle, dict) else {})))
 
     # --- factors of safety (rank 0 of a merged scene under yade.mpy) ------------------------------
     def fos(self, **kw):
@@ -233,7 +240,8 @@ class SlopeModel:
         from .fos import fos
         w0 = time.time()
         r = fos(self.sb, **kw)
-        rows = [["RBSM " + k if k == "strength reduction" else k, e["fs"], e["note"]] for k, e in r.estimates.items()]
+        rows = [["RBSM " + k if k.startswith(("strength reduction", "contact forces")) else k, e["fs"], e["note"]]
+                for k, e in r.estimates.items()]
         self._record("factor of safety", dict(kw), dict(fs=r.fs, method=r.method, conclusive=r.conclusive,
                                                         warnings=len(r.warnings)), w0, rows)
         return r
@@ -369,6 +377,19 @@ class SlopeModel:
             with open(path, "w") as f:
                 f.write(text + "\n")
         return text
+
+
+def _saved_monitor(O):
+    """The Monitor of watch()'s recorder if O.engines holds one (a scene loaded from a file), else None."""
+    import ast
+    import re
+    from .monitor import Monitor
+    for e in O.engines:
+        m = re.search(r"\._record\((.*)\)$", getattr(e, "command", "")) if getattr(e, "label", "") == "rbsmMonitor" else None
+        if m:
+            label, ids, period, progress = ast.literal_eval("(%s)" % m.group(1))
+            return Monitor(ids=ids, period=period, progress=progress, label=label, install=False, reset=False)
+    return None
 
 
 def _blocks(O):

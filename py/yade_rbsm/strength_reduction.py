@@ -315,7 +315,7 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     *mass_fraction*, *reference_tol*, *calibration* with *soil* = (c [Pa], φ [rad]) and *png*: see
     the module docstring. *patience*: a trial still undecided at *max_steps* is judged by its history
     and runs on while its motion dies out, up to *patience* x *max_steps* (:func:`trial`). *reference_rotation* [rad]: the largest rotation of a monitored block since
-    it was built (State.refOri) that the reference state may have; a slope whose blocks toppled or
+    it was built (the pose build_scene gave it; State.refOri for other bodies) that the reference state may have; a slope whose blocks toppled or
     tumbled while settling is not the slope to reduce: ValueError naming the block, when the blocks
     rotated more weigh more than *mass_fraction* of the monitored mass (fewer are reported as local;
     None: no check)."""
@@ -470,10 +470,12 @@ def _check_rotation(ids, limit, mass_fraction, verbose):
     built weigh more than *mass_fraction* of them (the runaway criterion's share: a lone block that
     rolled off the face is local, and only reported)."""
     from yade import O
+    from .slope_scene import _built_poses
+    built = _built_poses()  # (not refPos, refOri: a script or SlopeModel.settle resets displacements)
     turned, total, mass = [], 0.0, 0.0
     for i in ids:
         s = O.bodies[i].state
-        angle = _turned(s.refOri, s.ori)
+        angle = _turned(built(i)[1], s.ori)
         total += s.mass
         if angle > limit:
             turned.append((angle, i))
@@ -483,8 +485,8 @@ def _check_rotation(ids, limit, mass_fraction, verbose):
     angle, k = max(turned)
     s = O.bodies[k].state
     what = ("%d block(s) weighing %.2g %% of the monitored mass have rotated by more than reference_rotation = %.3g rad "
-            "since they were built (State.refOri), block #%d by %.1f deg (it moved %.3g m)"
-            % (len(turned), 100 * mass / total, limit, k, math.degrees(angle), (s.pos - s.refPos).norm()))
+            "since they were built, block #%d by %.1f deg (it moved %.3g m)"
+            % (len(turned), 100 * mass / total, limit, k, math.degrees(angle), (s.pos - built(k)[0]).norm()))
     if total > 0 and mass > mass_fraction * total:
         raise ValueError("strength_reduction: the reference state is not the slope that was built: %s: it toppled or "
                          "tumbled while settling (settle with stronger joints, a shorter step or stiffer blocks), or "
