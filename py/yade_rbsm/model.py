@@ -258,17 +258,25 @@ class SlopeModel:
                        % (r.shear, r.normal, r.n_joints)]])
         return r
 
-    def limit_equilibrium(self, polyline=None, circle=None, toe=None, search=None, n=50, g=9.81):
-        """Limit equilibrium on the blocks' ground with their material (gamma = rho g, c, phi:
-        :func:`safety.le_slope`): Fellenius on *polyline*, Fellenius and Bishop on *circle* (xc, yc, R) and
-        their critical circles through *toe* over the centre grid *search* (dict of x_range, y_range, nx,
-        ny, refine). Recorded; returns {method: Result, SearchResult or the message of its failure}."""
+    def limit_equilibrium(self, polyline=None, circle=None, toe=None, search=None, n=50, g=9.81, c=None, phi=None):
+        """Limit equilibrium on the blocks' ground (gamma = rho g of their material; :func:`safety.le_slope`):
+        Fellenius on *polyline*, Fellenius and Bishop on *circle* (xc, yc, R) and their critical circles
+        through *toe* over the centre grid *search* (dict of x_range, y_range, nx, ny, refine). The strength
+        along the surfaces: *c* [Pa] and *phi* [rad], by default the blocks' material's (for a slope cut by
+        joint sets the intact rock's, which the rows then say). Recorded; returns {method: Result,
+        SearchResult or the message of its failure}."""
+        from . import slope
         from .safety import le_slope, limit_equilibrium_summary
         w0 = time.time()
-        lem = limit_equilibrium_summary(le_slope(self.sb.surface, self.material, g=g), circle=circle, polyline=polyline,
-                                        toe=toe, search=search, n=n)
-        rows = [[k, None if isinstance(v, str) else v.fs, _le_note(v)] for k, v in lem.items()]
-        settings = dict(circle=[round(v, 6) for v in circle] if circle else None, search=search)
+        soil = le_slope(self.sb.surface, self.material, g=g, c=c, phi=phi)
+        lem = limit_equilibrium_summary(soil, circle=circle, polyline=polyline, toe=toe, search=search, n=n)
+        rock = c is None and phi is None and bool(getattr(self.sb, "joint_sets", None) or slope.joint_sets())
+        rows = [[k, None if isinstance(v, str) else v.fs, _le_note(v) + ("; the intact rock's c, phi" if rock else "")]
+                for k, v in lem.items()]
+        layer = soil.layers[0]
+        settings = dict(circle=[round(v, 6) for v in circle] if circle else None, search=search,
+                        c_kPa=layer.c, phi_deg=round(layer.phi, 4), strength="given" if not (c is None and phi is None)
+                        else ("the intact rock's" if rock else "the blocks' material's"))
         self._record("limit equilibrium", settings, {k: r[1] for k, r in zip(lem, rows)}, w0, rows)
         return lem
 

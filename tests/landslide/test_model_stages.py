@@ -31,8 +31,11 @@ moved = max((b.state.pos - b.state.refPos).norm() for b in O.bodies)
 again = m.give_joint_sets(tol=1e-12, max_steps=200)  # (a budget: issue 37's trial waited 72 s for 100 000 steps)
 fs = m.contact_fs(plane)
 lem = m.limit_equilibrium(polyline=plane + [(plane[1][0] + 1e-3, 5.8)])  # the plane, then up the crack
+lem20 = m.limit_equilibrium(polyline=plane + [(plane[1][0] + 1e-3, 5.8)], c=0, phi=math.radians(20))  # a strength given
+ratio = lem20["Fellenius, slip polyline"].fs / lem["Fellenius, slip polyline"].fs
 O.save(out + "/scene.yade.gz")
-print("RESULT " + json.dumps(dict(converged=st.figures["converged"], tans=tans, moved=moved, fs=fs.fs, again=again.figures,
+print("RESULT " + json.dumps(dict(converged=st.figures["converged"], tans=tans, moved=moved, fs=fs.fs, again=again.figures, ratio=ratio,
+                                  strength=m.stages[-1].settings["strength"],
                                   table=m.fs_table(), engines=[type(e).__name__ for e in O.engines])))
 """
 
@@ -69,7 +72,7 @@ def test_stages_of_the_main_example(tmp_path):
     assert rows[0] == "Factor of safety - all methods"
     rbsm = [l for l in rows if l.startswith("RBSM contact forces, slip polyline")]
     fel = [l for l in rows if l.startswith("Fellenius, slip polyline")]
-    assert len(rbsm) == len(fel) == 1, r["table"]
+    assert len(rbsm) == 1 and len(fel) == 2, r["table"]  # (the second Fellenius row: phi = 20 deg)
     assert float(rbsm[0].split()[5]) == round(r["fs"], 3)
     assert abs(float(fel[0].split()[3]) - math.tan(math.radians(30)) / math.tan(math.radians(35))) < 2e-3  # the wedge, c = 0
     assert r["engines"][-1] == "NewtonIntegrator"
@@ -77,8 +80,9 @@ def test_stages_of_the_main_example(tmp_path):
     s = _run(tmp_path, "resume.py", RESUME)
     assert s["table"] == r["table"]  # the estimates were saved with the scene
     assert r["again"]["steps"] == 200 and not r["again"]["converged"]
+    assert abs(r["ratio"] - math.tan(math.radians(20)) / math.tan(math.radians(30))) < 1e-9 and r["strength"] == "given"
     assert s["stages"] == ["build", "in-situ", "joint strengths", "equilibrium", "contact forces", "limit equilibrium",
-                           "dynamic"], s["stages"]
+                           "limit equilibrium", "dynamic"], s["stages"]
     assert s["labels"] == ["rbsmMonitor"], s["labels"]  # one recorder: no second progress line after the load
     assert all(os.path.getsize(f) > 0 for f in s["plot"])  # (on 12edc9b: AttributeError, no monitor)
     assert s["engines"] == r["engines"]  # the stage's VTK recorder is gone, NewtonIntegrator still last
