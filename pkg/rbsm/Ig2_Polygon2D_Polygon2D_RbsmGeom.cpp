@@ -88,17 +88,36 @@ namespace {
 	// joint springs represent: reported (a few times per run), like UDEC's "contact overlap too great".
 	constexpr Real   deepOverlap = 0.05;
 	std::atomic<int> deepOverlapReports { 0 };
-	void             reportDeepOverlap(const Interaction& I, Real overlap, Real size, bool atSetUp, long iter)
+	// After the first five reports an overlap is reported again when it is twice the deepest reported so
+	// far (as a fraction of the smaller block): overlaps that keep growing do not go unnoticed.
+	std::atomic<double> deepestReported { 0 };
+	bool                deepestSoFar(double fraction, double factor)
 	{
-		rbsm_report::limited(deepOverlapReports, [&](bool last) {
-			std::ostringstream msg;
-			msg << "yade-rbsm: WARNING: bodies #" << I.getId1() << " and #" << I.getId2() << " overlap by " << overlap << " m, "
-			    << 100 * overlap / size << " % of the smaller block's diameter, at step " << iter
-			    << (atSetUp ? " when their contact is made (blocks placed overlapping? check the input geometry)"
-			                : " (impact too violent for the time step, or blocks too soft?)")
-			    << (last ? "; further overlap warnings are not shown" : "");
-			return msg.str();
-		});
+		double seen = deepestReported.load();
+		while (fraction > factor * seen)
+			if (deepestReported.compare_exchange_weak(seen, fraction)) return true;
+		return false;
+	}
+	std::string overlapLine(const Interaction& I, Real overlap, double fraction, bool atSetUp, long iter, const char* tail)
+	{
+		std::ostringstream msg;
+		msg << "yade-rbsm: WARNING: bodies #" << I.getId1() << " and #" << I.getId2() << " overlap by " << overlap << " m, "
+		    << 100 * fraction << " % of the smaller block's diameter, at step " << iter
+		    << (atSetUp ? " when their contact is made (blocks placed overlapping? check the input geometry)"
+		                : " (impact too violent for the time step, or blocks too soft?)")
+		    << tail;
+		return msg.str();
+	}
+	void reportDeepOverlap(const Interaction& I, Real overlap, Real size, bool atSetUp, long iter)
+	{
+		const double fraction = double(overlap / size);
+		if (deepOverlapReports.load() < 5) {
+			deepestSoFar(fraction, 1);
+			rbsm_report::limited(deepOverlapReports, [&](bool last) {
+				return overlapLine(I, overlap, fraction, atSetUp, iter, last ? "; further overlap warnings only for twice the deepest before" : "");
+			});
+		} else if (deepestSoFar(fraction, 2))
+			std::cerr << overlapLine(I, overlap, fraction, atSetUp, iter, "; twice the deepest overlap reported before: overlaps are growing") + "\n";
 	}
 }
 
