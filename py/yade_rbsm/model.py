@@ -348,12 +348,18 @@ class SlopeModel:
             mon.mark(" dynamic stage")
             mon.target(time=duration)
         out = DynamicOutputs(ids, snapshots, slip, vtk, vtk_every, energy and damping == 0 and not split)
-        t0, iter0, figures = O.time, O.iter, {}
+        t0, iter0, figures, shown = O.time, O.iter, {}, [time.time()]
         for k in range(chunks):
             t_end = t0 + duration * (k + 1) / chunks
             while O.time < t_end * (1 - 1e-12):  # as settle does: an error of a step raises (O.run can lose it)
                 mpi.run(max(1, min(500, int((t_end - O.time) / O.dt) + 1)))
                 out.started()
+                if split and progress is not None and mpi.rank() == 0 and time.time() - shown[0] >= progress:
+                    shown[0] = time.time()  # (serially the Monitor's line; yade.mpy's ranks run no PyRunner of ours)
+                    done = min(1.0, (O.time - t0) / duration)
+                    print("progress: step %d  %.4f s of the stage's %.4g s, %3.0f%%, about %.0f s left" % (
+                        O.iter, O.time - t0, duration, 100 * done, (shown[0] - w0) * (1 - done) / max(done, 1e-9)),
+                          flush=True)
             if split:
                 mpi.merge()
             if mpi.rank() == 0:
