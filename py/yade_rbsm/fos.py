@@ -255,5 +255,5 @@ def _bishop(sb, ids):
                                r_range=(0.3 * H, 5 * H), nr=19, method="bishop", base=sb.base, refine=3)
     except ValueError as e:
         return dict(fs=None, note=str(e))
-    return dict(fs=r.fs, note="c %.3g kPa, phi %.1f deg of the blocks' material, %s" % (
-        mat.cohesion / 1e3, math.degrees(mat.frictionAngle), r.circle))
+    return dict(fs=r.fs, note="c %.3g kPa, phi %.1f deg of the blocks' material, %s%s" % (
+        mat.cohesion / 1e3, math.degrees(mat.frictionAngle), r.circle, "".join("; WARNING: " + w for w in r.warnings)))

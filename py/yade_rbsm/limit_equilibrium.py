@@ -839,6 +839,7 @@ class SearchResult:
     n_tried: int
     n_valid: int
     n_skipped: int
+    warnings: List[str] = field(default_factory=list)  # the minimum on the edge of the search space
 
     @property
     def fs(self) -> float:
@@ -847,8 +848,21 @@ class SearchResult:
     def __str__(self):
         return (
             f"critical circle ({self.method}): FS = {self.best.fs:.3f} at {self.circle}; "
-            f"{self.n_valid} of {self.n_tried} trial circles valid"
+            f"{self.n_valid} of {self.n_tried} trial circles valid" + "".join("; WARNING: " + w for w in self.warnings)
         )
+
+
+def _on_edges(c, ranges):
+    """What of circle *c* (xc, yc, R) lies on the edge of its range or beyond it (the refinement re-grids
+    around the best centre and may leave the ranges): the true minimum may be further out."""
+    out = []
+    for name, v, rng in ranges:
+        a, b = float(rng[0]), float(rng[1])
+        tol = 1e-9 * max(b - a, 1.0)
+        if b > a and (v <= a + tol or v >= b - tol):
+            out.append(f"the critical circle's {name} = {v:.4g} is on the edge of {name}_range ({a:g}, {b:g}) or "
+                       f"beyond it: the minimum may lie further out; widen {name}_range")
+    return out
 
 
 def _lin(rng, k, name):
@@ -942,9 +956,11 @@ def critical_circle(
     best = None
     count = dict(tried=0, valid=0, below=0, outside=0, shallow=0)
 
-    def trial(xc, yc, R):
+    def trial(xc, yc, R, keep=True):
+        """The valid result of circle (xc, yc, R), kept as the best if lower and counted (*keep*), or None."""
         nonlocal best
-        count["tried"] += 1
+        tally = count if keep else dict(count)  # (a probe beyond the grid is not one of its circles)
+        tally["tried"] += 1
         if R <= 0:
             return
         try:
@@ -952,21 +968,22 @@ def critical_circle(
         except StressFieldError as e:  # a field of the wrong shape fails on every circle: say so
             if not e.outside:
                 raise
-            count["outside"] += 1
+            tally["outside"] += 1
             return
         except ValueError:
             return
         if base is not None and _lowest(r) < base - slope.tol:
-            count["below"] += 1
+            tally["below"] += 1
             return
         if min_depth > 0 and _depth(slope, r) < min_depth:
-            count["shallow"] += 1
+            tally["shallow"] += 1
             return
         if not (r.fs > 0 and math.isfinite(r.fs)):
             return
-        count["valid"] += 1
-        if best is None or r.fs < best.fs:
+        tally["valid"] += 1
+        if keep and (best is None or r.fs < best.fs):
             best = r
+        return r
 
     for level in range(refine + 1):
         for xc in xs:
@@ -990,4 +1007,25 @@ def critical_circle(
                        f"; {count['outside']} run outside the stress field" if count["outside"] else "",
                        f"; {count['shallow']} are shallower than min_depth = {min_depth:g}" if count["shallow"] else ""])
         raise ValueError(f"no valid trial circle in the search space ({count['tried']} tried{why})")
-    return SearchResult(meth, best, best.surface, count["tried"], count["valid"], count["tried"] - count["valid"])
+    # Near an edge of the centre grid, one row of centres beyond it (all radii): a lower FS there means the
+    # minimum lies outside the search space (the refinement only re-grids around the best centre).
+    c, warnings = best.surface, []
+    x0s, y0s = _lin(x_range, nx, "x_range"), _lin(y_range, ny, "y_range")
+    for name, k, grid in (("x", 0, x0s), ("y", 1, y0s)):
+        step = (grid[-1] - grid[0]) / (len(grid) - 1) if len(grid) > 1 else 0.0
+        v = (c.xc, c.yc)[k]
+        for edge, side in ((grid[0], -1), (grid[-1], 1)):
+            if step <= 0 or abs(v - edge) > 2 * step:
+                continue
+            centre = [c.xc, c.yc]
+            centre[k] = edge + side * step
+            rs = [math.hypot(centre[0] - tx, centre[1] - ty)] if through is not None else radii
+            found = [r for r in (trial(centre[0], centre[1], R, keep=False) for R in rs) if r is not None]
+            low = min(found, key=lambda r: r.fs) if found else None
+            if low is not None and low.fs < best.fs:
+                warnings.append(f"a circle centred beyond {name}_range ({name} = {centre[k]:.4g}) has FS {low.fs:.3f} < "
+                                f"{best.fs:.3f}: the minimum lies outside the search space; widen {name}_range")
+    if through is None:
+        warnings += _on_edges(c, [("r", c.R, r_range)])
+    return SearchResult(meth, best, best.surface, count["tried"], count["valid"], count["tried"] - count["valid"],
+                        warnings)

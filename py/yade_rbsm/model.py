@@ -417,6 +417,7 @@ def _le_note(v):
     if isinstance(v, str):
         return "failed: " + v
     if hasattr(v, "n_valid"):  # SearchResult
-        return "%s; %d of %d toe circles valid" % (v.circle, v.n_valid, v.n_tried)
+        return "%s; %d of %d toe circles valid%s" % (v.circle, v.n_valid, v.n_tried,
+                                                      "".join("; WARNING: " + w for w in v.warnings))
     note = "T = %.1f kN/m, N = %.1f kN/m" % (v.shear, v.normal)
     return note + (", %s" % v.surface if type(v.surface).__name__ == "Circle" else "")

@@ -462,3 +462,22 @@ def test_bad_search_arguments():
         le.critical_circle(s, (0, 1), (20, 21))
     with pytest.raises(ValueError, match="no valid trial circle"):
         le.critical_circle(s, (100, 110), (50, 60), nx=3, ny=3, r_range=(1, 2), nr=2)
+
+
+def test_a_critical_circle_on_the_edge_of_its_search_space_says_so():
+    """Issue 37, a new user's trial: y_range=(15, 45) gave a critical circle centred at y = 12.5 (the refinement
+    re-grids around the best centre and may leave the ranges), without a word that the minimum may lie further
+    out. Griffiths & Lane's slope: the reference search (centres up to 50 m, radii to 60 m) has no warning; a
+    grid whose centres start above the critical one says which range to widen, and its FS is higher."""
+    import os
+    import sys
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+    from reference_slopes import GAMMA, SLOPES, ground, search
+    _, c, phi, _ = SLOPES["gl"]
+    slope = Slope(ground("gl"), Layer(c=c, phi=phi, gamma=GAMMA))
+    ref = le.critical_circle(slope, **search("gl"))
+    assert ref.warnings == [] and "WARNING" not in str(ref)
+    high = dict(search("gl"), y_range=(ref.circle.yc + 8, 50), refine=0)
+    r = le.critical_circle(slope, **high)
+    assert r.fs > ref.fs and any("y_range" in w for w in r.warnings), r.warnings
+    assert "WARNING: a circle centred beyond y_range" in str(r)
