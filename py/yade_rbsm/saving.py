@@ -1,0 +1,47 @@
+"""``O.save`` that names the path and the problem (issue 34, item 12). YADE 2023.02a's ``Omega.save`` says
+"output stream error" for a missing directory, a read-only one or a full disk, without the path, and returns
+without a word, having written nothing, for a path that is a directory. Importing ``yade_rbsm`` wraps
+``Omega.save``: the same call and the same files, with those cases refused (ValueError) or re-raised with the
+path (OSError), before anything is half written. ``:memory:`` slots (``O.saveTmp``) pass through."""
+import errno
+import os
+
+_wrapped = None
+
+
+def _check(path):
+    """ValueError naming *path* and what is wrong with it as a place to save a scene, or None."""
+    if not isinstance(path, str) or not path:
+        raise ValueError("O.save: give a file name (got %r), e.g. O.save('scene.yade.gz')" % (path,))
+    if os.path.isdir(path):
+        raise ValueError("O.save(%r): that is a directory; give a file name in it, e.g. %r"
+                         % (path, os.path.join(path, "scene.yade.gz")))
+    folder = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(folder):
+        raise ValueError("O.save(%r): the directory %r does not exist (os.makedirs(%r, exist_ok=True) first)"
+                         % (path, folder, folder))
+    if not os.access(folder, os.W_OK) or (os.path.exists(path) and not os.access(path, os.W_OK)):
+        raise ValueError("O.save(%r): no permission to write there" % path)
+
+
+def install():
+    """Wrap ``yade.wrapper.Omega.save`` (once per process)."""
+    global _wrapped
+    import yade.wrapper
+    if _wrapped is not None:
+        return
+    original = yade.wrapper.Omega.save
+
+    def save(self, file, quiet=False):
+        if not (isinstance(file, str) and file.startswith(":memory:")):
+            _check(file)
+        try:
+            return original(self, file, quiet)
+        except RuntimeError as e:
+            if isinstance(file, str) and not file.startswith(":memory:"):
+                raise OSError(errno.EIO, "O.save: writing the scene failed (%s): a full disk, or a file system that "
+                              "refused it?" % e, file) from e
+            raise
+    save.__doc__ = original.__doc__
+    yade.wrapper.Omega.save = save
+    _wrapped = original
