@@ -15,9 +15,9 @@ else:
     from .mpi import abort_on_abnormal_exit as _abort_on_abnormal_exit
 
     _abort_on_abnormal_exit()  # under mpiexec: an error on one rank ends the job, not a deadlock
-    from .saving import install as _checked_save
+    from .omega_hooks import install as _install_omega_hooks
 
-    _checked_save()  # O.save names the path and the problem (YADE's says "output stream error")
+    _install_omega_hooks()  # O.save names the path and the problem; O.dt = -1 turns RbsmTimeStepper.setDt on
 
 # submodules (import them explicitly): geometry (plane geometry, pure Python), omega (joints, free bodies,
 # engines by label), slope, safety (its parts: contact_safety, slip_surface, le_bridge), snapshots, limit_equilibrium, vtkexport (VTK

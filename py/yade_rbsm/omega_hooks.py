@@ -25,11 +25,12 @@ def _check(path):
 
 
 def install():
-    """Wrap ``yade.wrapper.Omega.save`` (once per process)."""
+    """Wrap ``yade.wrapper.Omega.save`` and the ``dt`` setter (once per process)."""
     global _wrapped
     import yade.wrapper
     if _wrapped is not None:
         return
+    _install_dt(yade.wrapper.Omega)
     original = yade.wrapper.Omega.save
 
     def save(self, file, quiet=False):
@@ -45,3 +46,17 @@ def install():
     save.__doc__ = original.__doc__
     yade.wrapper.Omega.save = save
     _wrapped = original
+
+
+def _install_dt(Omega):
+    dt = Omega.dt
+
+    def set_dt(self, value):
+        if value < 0:
+            from .scene import time_stepper
+            stepper = time_stepper()
+            if stepper is not None:  # (the step it sets from the next step on; O.dt stays meanwhile)
+                stepper.setDt = True
+                return
+        dt.fset(self, value)
+    Omega.dt = property(dt.fget, set_dt, doc=dt.__doc__)
