@@ -11,6 +11,10 @@
     print(m)              # the stages, what each ran and found
     m.report("out/report.md")
 
+The estimates (``contact_fs(polyline)``, ``limit_equilibrium(...)``, ``probe()``, ``fos()``) record their
+factors of safety, gathered by ``fs_table()``; ``watch(ids)`` records yade.plot series through the stages
+(``save_plot``); ``run(..., chunks=, snapshots=, vtk=)`` writes as it goes (dynamic_stage.py); under
+yade.mpy ``build(distribute=True)`` splits the slope before bonding (scripts/landslide_slope.py uses all).
 Each stage is recorded (:class:`Stage`: its name, settings, figures, wall time) in ``O.tags``, so a
 scene saved with ``O.save`` keeps its history: ``SlopeModel.resume()`` after ``O.load`` continues it.
 The steps scripts wrote by hand (the bonding step, the friction held while settling, the damping
@@ -314,6 +318,8 @@ class SlopeModel:
 
     def save_plot(self, base, title="RBSM slope"):
         """The watched series as *base*.png and *base*.txt (:meth:`watch`); returns the paths."""
+        if getattr(self, "monitor", None) is None:
+            raise ValueError("SlopeModel.save_plot: nothing was recorded; call watch(ids) before the stages to plot")
         return self.monitor.save(base, title)
 
     def run(self, duration, strength_factor=None, damping=0.0, progress=10.0, period=200, chunks=1, snapshots=None,
@@ -349,11 +355,13 @@ class SlopeModel:
             mon.target(time=duration)
         out = DynamicOutputs(ids, snapshots, slip, vtk, vtk_every, energy and damping == 0 and not split)
         t0, iter0, figures, shown = O.time, O.iter, {}, [time.time()]
+        if out.energy:  # O.energy's terms are set by a step: the balance counts from the end of the first
+            mpi.run(1)
+            out.started()
         for k in range(chunks):
             t_end = t0 + duration * (k + 1) / chunks
             while O.time < t_end * (1 - 1e-12):  # as settle does: an error of a step raises (O.run can lose it)
                 mpi.run(max(1, min(500, int((t_end - O.time) / O.dt) + 1)))
-                out.started()
                 if split and progress is not None and mpi.rank() == 0 and time.time() - shown[0] >= progress:
                     shown[0] = time.time()  # (serially the Monitor's line; yade.mpy's ranks run no PyRunner of ours)
                     done = min(1.0, (O.time - t0) / duration)
