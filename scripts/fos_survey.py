@@ -93,5 +93,5 @@ def main():
 
 if __name__ == "__main__" and "--all" in sys.argv:
     main()
-elif len(sys.argv) > 1 and sys.argv[1] in CASES:
+elif __name__ == "__main__" and len(sys.argv) > 1 and sys.argv[1] in CASES:  # (yade -x runs it as __main__)
     run(sys.argv[1])

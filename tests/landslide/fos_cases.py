@@ -5,6 +5,7 @@ voronoi: a c-phi slope cut into Voronoi blocks (a continuum): the design value i
 gl: Griffiths & Lane's slope cut into Voronoi blocks: the design value is Bishop's critical circle."""
 import json
 import math
+import os
 import sys
 import time
 
@@ -14,25 +15,12 @@ import yade_rbsm as yr
 from yade_rbsm import slope as sl
 
 case = sys.argv[1] if len(sys.argv) > 1 else "plane"
-if case == "plane":
-    psi, beta, rho = math.radians(30), math.radians(60), 2600.0
-    xt, H = 10.0, 12.0
-    xcrest = xt + H / math.tan(beta)
-    xd, yd, xc = xt + 3 / math.tan(beta), 3.0, 22.0
-    yc = yd + (xc - xd) * math.tan(psi)
-    cb = 20e3
-    wedge = [(xd, yd), (xc, yc), (xc, H), (xcrest, H)]
-    W = rho * 9.81 * 0.5 * sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(wedge, wedge[1:] + wedge[:1]))
-    L = (xc - xd) / math.cos(psi)
-    closed = (cb * L + W * math.cos(psi) * math.tan(math.radians(30))) / (W * math.sin(psi))
-    rock = wrapper.RbsmMat(young=2e8, poisson=0.2, density=rho, frictionAngle=math.radians(45), cohesion=5e6,
-                           tensileStrength=2e6, ductile=True)
-    traces = [sl.Trace([(xd, yd), (xc, yc)], cohesion=cb, friction_angle=30, ductile=True, name="bedding"),
-              sl.Trace([(xc, yc), (xc, H)], friction_angle=20, ductile=True, name="tension crack")]
-    sb = sl.jointset_blocks([(0, 0), (xt, 0), (xcrest, H), (35, H)], -4.0, traces=traces)
+# (yade -x: the scripts folder from the package's place)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(sl.__file__)))), "scripts"))
+if case == "plane":  # scripts/fos_survey.py's: Hoek & Bray's plane failure, and its closed form
+    from fos_survey import blocks_and_rock
+    sb, rock, closed, _ = blocks_and_rock("plane")
 elif case == "gl":  # Griffiths & Lane's 2:1 slope on a firm base at toe level (scripts/reference_slopes.py)
-    import os
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(sl.__file__)))), "scripts"))
     from reference_slopes import GAMMA, ground, search, soil
     from yade_rbsm import limit_equilibrium as le
     closed = le.critical_circle(soil("gl"), **search("gl")).fs  # the reference search's minimum, 1.382
