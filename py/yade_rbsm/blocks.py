@@ -75,6 +75,7 @@ def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=F
     except ValueError as e:
         # name the block by its world vertices: the body has no id before it is appended
         raise ValueError("polygon2d(%s): %s" % (_describe(pts), e)) from None
+    _warn_short_edges(pts)
     if color is not None:
         shape.color = color
     b = wrapper.Body()
@@ -92,3 +93,19 @@ def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=F
     b.state.inertia = (inertia, inertia, inertia)
     b.state.blockedDOFs = "xyzXYZ" if fixed else "zXY"
     return b
+
+
+def _warn_short_edges(pts, fraction=0.02):
+    """A warning for a polygon whose edges are all shorter than *fraction* of its diameter (a 10 000-gon standing
+    for a disc): a joint acts along one pair of edges, so such a block carries load on a few millimetres of
+    spring and sinks into what it rests on (issue 34, item 8: 41 % of its diameter into a base)."""
+    import warnings
+    n = len(pts)
+    longest = max(math.hypot(pts[(k + 1) % n][0] - pts[k][0], pts[(k + 1) % n][1] - pts[k][1]) for k in range(n))
+    diameter = max(math.hypot(p[0] - q[0], p[1] - q[1]) for p in pts[:: max(1, n // 64)] for q in pts)
+    if longest < fraction * diameter:
+        warnings.warn("polygon2d(%s): its longest edge, %.3g m, is %.2g %% of its size (%.3g m): an RBSM joint acts "
+                      "along one pair of edges, so this block would rest on a %.3g m spring and sink into what it "
+                      "meets; model it with fewer, longer edges (a disc: a sphere, or a polygon of at most %d sides)"
+                      % (_describe(pts), longest, 100 * longest / diameter, diameter, longest, int(math.pi / fraction)),
+                      stacklevel=3)

@@ -211,3 +211,27 @@ report(**out)
         assert isinstance(v, list), (s, v)
         assert v[0] == pytest.approx(0.74 * s * s, rel=1e-6), (s, v)  # shoelace of (0,0) (1,0) (1,0.6) (0.2,1)
         assert 0 < v[1] < s and 0 < v[2] < s, (s, v)
+
+
+def test_a_block_of_short_edges_is_warned_about():
+    """Issue 34, item 8: a 10 000-sided polygon (a "disc", 0.3 mm edges) on a base sank 41 % of its diameter
+    into it with overlap warnings only: a joint acts along one pair of edges, so the block rests on a 0.3 mm
+    spring. polygon2d now says so when the block is made; a 64-gon (edges 4.9 % of its size) and a brick are
+    not warned about. On 2c4bcaa no warning."""
+    p = run_yade("""
+import math, warnings
+from yade_rbsm import polygon2d
+mat = RbsmMat(young=1e8, density=2000)
+O.materials.append(mat)
+out = {}
+for n in (10000, 64, 4):
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        polygon2d([(0.5 * math.cos(2 * math.pi * (k + 0.5) / n), 0.5 * math.sin(2 * math.pi * (k + 0.5) / n)) for k in range(n)], mat)
+    out[str(n)] = [str(x.message) for x in w]
+report(**out)
+""")
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    (r,) = results(p)
+    assert len(r["10000"]) == 1 and "longest edge" in r["10000"][0] and "10000 vertices" in r["10000"][0], r
+    assert r["64"] == [] and r["4"] == [], r
