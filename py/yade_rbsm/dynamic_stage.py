@@ -13,7 +13,7 @@ class DynamicOutputs:
 
     def __init__(self, ids, snapshots=None, slip=None, vtk=None, vtk_every=None, energy=False):
         from yade import O
-        from . import mpi, vtkexport
+        from . import mpi, omega, vtkexport
         self.ids, self.prefix, self.slip, self.energy = ids, snapshots, slip, energy
         self.master, self.split = mpi.rank() == 0, mpi.distributed() is not None
         self.t0, self.balance0, self.series, self.recorder = O.time, None, None, None
@@ -26,10 +26,7 @@ class DynamicOutputs:
             if vtk_every and not self.split:  # (split: a recorder would write each rank's part of the scene)
                 self.recorder = vtkexport.recorder(vtk, name, virtPeriod=vtk_every, label="vtkRecorder")
                 self.recorder.virtLast = O.time  # (the first snapshot is written here, at t = 0)
-                engines = list(O.engines)  # before NewtonIntegrator, which stays last
-                engines.insert(len(engines) - 1 if type(engines[-1]).__name__ == "NewtonIntegrator" else len(engines),
-                               self.recorder)
-                O.engines = engines
+                O.engines = omega.before_newton(list(O.engines), self.recorder)
                 self.series = vtkexport.series_of(self.recorder)
             else:
                 self.series = vtkexport.series(vtk, name, resume=False)
@@ -53,10 +50,10 @@ class DynamicOutputs:
         """Part *k* of *n* ended at *t* s into the stage: its line, its PNG, a VTK snapshot (when no
         recorder writes them). Returns the figures of the scene now."""
         from yade import O
-        dmax = max(((O.bodies[i].state.pos - O.bodies[i].state.refPos).norm() for i in self.ids), default=0.0)
-        joints = [I for I in O.interactions if I.isReal and type(I.phys).__name__ == "RbsmPhys"]
-        nslip = sum(1 for I in joints if I.phys.nSlipping > 0)
-        nopen = sum(1 for I in joints if I.phys.nOpen > 0)
+        from .monitor import joint_counts
+        d = [(O.bodies[i].state.pos - O.bodies[i].state.refPos).norm() for i in self.ids]
+        dmax = max(d, default=0.0)
+        nslip, nopen, _ = joint_counts(O)
         print("  dynamic stage: t = %.3f s  max displacement %.3f m  slipping joints %d  open joints %d  (%.1f s wall)"
               % (t, dmax, nslip, nopen, time.time() - w0), flush=True)
         if self.prefix:
@@ -64,8 +61,7 @@ class DynamicOutputs:
                       "dynamic stage, t = %.2f s" % t)
         if self.series is not None and self.recorder is None:
             self.series.write()
-        d = [(O.bodies[i].state.pos - O.bodies[i].state.refPos).norm() for i in self.ids]
-        return dict(max_displacement=max(d, default=0.0), mean_displacement=sum(d) / len(d) if d else 0.0,
+        return dict(max_displacement=dmax, mean_displacement=sum(d) / len(d) if d else 0.0,
                     slipping=nslip, open=nopen)
 
     def finish(self):
@@ -82,7 +78,7 @@ class DynamicOutputs:
                   "work of gravity" % (", ".join("%s %.4g" % kv for kv in sorted(change.items())), error), flush=True)
             figures["energy_error_percent"] = error
         if self.recorder is not None:
-            O.engines = [e for e in O.engines if e is not self.recorder and getattr(e, "label", "") != "vtkRecorder"]
+            O.engines = [e for e in O.engines if getattr(e, "label", "") != "vtkRecorder"]  # (O.engines: new wrappers)
         if self.series is not None and self.master:
             if self.series.entries["blocks"][-1][0] < O.time:
                 self.series.write()  # the last state

@@ -98,11 +98,7 @@ class Monitor:
         command = "__import__('yade_rbsm.monitor', fromlist=['_record'])._record(%r, %r, %d, %r)" % (
             self.label, self.ids, self.period, self.progress)
         pr = wrapper.PyRunner(command=command, iterPeriod=self.period, label=self.label)
-        newton = [j for j, e in enumerate(engines) if getattr(e, "label", "") == "newton"
-                  or type(e).__name__ == omega.LABEL_TYPES["newton"]]
-        k = newton[0] if newton else len(engines)
-        engines.insert(k, pr)
-        O.engines = engines
+        O.engines = omega.before_newton(engines, pr)
         return pr
 
     def mark(self, label):

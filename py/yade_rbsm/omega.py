@@ -9,7 +9,7 @@ Every function takes an optional *O* (default: ``yade.O``, imported when called,
 imports without YADE); classes are recognised by their names, so a stand-in O works too.
 """
 
-__all__ = ["LABEL_TYPES", "is_joint", "joints", "is_fixed", "free_bodies", "engine", "engines_of_type", "newton", "ip2",
+__all__ = ["LABEL_TYPES", "is_joint", "joints", "is_fixed", "free_bodies", "engine", "engines_of_type", "newton", "before_newton", "ip2",
            "switch_off_pyrunners"]
 
 #: the class each label of engines() / mixed_engines() names, for lists built without labels
@@ -88,6 +88,14 @@ def engine(label, O=None):
 def newton(O=None):
     """The NewtonIntegrator (label "newton")."""
     return engine("newton", O)
+
+
+def before_newton(engines, engine):
+    """*engines* (a list) with *engine* inserted right before NewtonIntegrator (by label or class), else at the
+    end: an engine that reads the step's forces, with NewtonIntegrator staying last."""
+    at = [j for j, e in enumerate(engines) if getattr(e, "label", "") == "newton" or type(e).__name__ == LABEL_TYPES["newton"]]
+    engines.insert(at[0] if at else len(engines), engine)
+    return engines
 
 
 def ip2(O=None):
