@@ -77,6 +77,7 @@ class SlopeModel:
     def resume(cls):
         """The model of the scene in O (after O.load): its stages and what fos() needs of its blocks."""
         from yade import O
+        from .monitor import saved_monitor
         m = cls()
         if _TAG in O.tags.keys():
             m.stages = [Stage(**d) for d in json.loads(O.tags[_TAG])]
@@ -84,7 +85,7 @@ class SlopeModel:
             m.sb = _Blocks(json.loads(O.tags[_BLOCKS_TAG]))
         free = _blocks(O)
         m.material = free[0].material if free else None  # (limit equilibrium reads the blocks' material)
-        m.monitor = _saved_monitor(O)  # watch()'s recorder, saved in O.engines: save_plot() goes on with it
+        m.monitor = saved_monitor(O)  # watch()'s recorder, saved in O.engines: save_plot() goes on with it
         return m
 
     def __repr__(self):
@@ -399,19 +400,6 @@ class SlopeModel:
             with open(path, "w") as f:
                 f.write(text + "\n")
         return text
-
-
-def _saved_monitor(O):
-    """The Monitor of watch()'s recorder if O.engines holds one (a scene loaded from a file), else None."""
-    import ast
-    import re
-    from .monitor import Monitor
-    for e in O.engines:
-        m = re.search(r"\._record\((.*)\)$", getattr(e, "command", "")) if getattr(e, "label", "") == "rbsmMonitor" else None
-        if m:
-            label, ids, period, progress = ast.literal_eval("(%s)" % m.group(1))
-            return Monitor(ids=ids, period=period, progress=progress, label=label, install=False, reset=False)
-    return None
 
 
 def _blocks(O):

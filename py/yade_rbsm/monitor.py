@@ -43,6 +43,19 @@ def _record(label, ids, period, progress):
     m.record()
 
 
+def saved_monitor(O, label="rbsmMonitor"):
+    """The Monitor of the recorder *label* in O.engines (a scene loaded from a file: its command, made by
+    :meth:`Monitor.install`, holds the settings), or None."""
+    import ast
+    import re
+    for e in O.engines:
+        m = re.search(r"\._record\((.*)\)$", getattr(e, "command", "")) if getattr(e, "label", "") == label else None
+        if m:
+            label, ids, period, progress = ast.literal_eval("(%s)" % m.group(1))
+            return Monitor(ids=ids, period=period, progress=progress, label=label, install=False, reset=False)
+    return None
+
+
 def kinetic_energy(O=None):
     if O is None:
         from yade import O
