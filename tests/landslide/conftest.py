@@ -2,9 +2,11 @@
 import importlib.util
 import os
 import subprocess
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SRC = os.environ.get("RBSM_SOURCE_DIR", os.path.normpath(os.path.join(HERE, "..", "..")))
+sys.path.insert(0, os.path.join(HERE, "..", "support"))  # verification.record
 
 
 def load_slope():

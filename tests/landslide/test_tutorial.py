@@ -8,6 +8,7 @@ import re
 import subprocess
 
 from conftest import SRC, launcher
+from verification import record
 
 RESUME = r"""
 import json, sys
@@ -43,3 +44,41 @@ def test_tutorial_runs_and_its_scene_resumes(tmp_path):
     r = json.loads([l for l in p.stdout.splitlines() if l.startswith("RESULT ")][0][7:])
     assert r["before"] == ["build", "in-situ", "joint strengths", "equilibrium", "factor of safety", "dynamic"], r
     assert r["after"] == r["before"] + ["dynamic"] and r["pattern"] == "joint sets", r
+
+
+def _run_tutorial(name, tmp_path, timeout=600):
+    script = os.path.join(SRC, "scripts", name)
+    assert sum(1 for _ in open(script)) < 60, "a tutorial stays short enough to read in one go"
+    p = subprocess.run([launcher(), "-n", "-x", script, str(tmp_path)], cwd=str(tmp_path), capture_output=True, text=True,
+                       timeout=timeout)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    return p.stdout
+
+
+def test_soil_slope_tutorial_gives_bishop_with_the_blocks_estimate_beside_it(tmp_path):
+    """The manual's soil-slope tutorial: fos() on Griffiths & Lane's slope in Voronoi blocks is Bishop's critical
+    circle (within 1 % of the tutorial's own limit-equilibrium search), conclusive, and strength reduction on the
+    rigid blocks is shown beside it, above it (the interlocking the tutorial explains)."""
+    out = _run_tutorial("tutorial_soil_slope.py", tmp_path)
+    m = re.search(r"FosResult\(fs=([0-9.]+) by Bishop, critical circle.*conclusive", out)
+    b = re.search(r"Bishop, critical circle: ([0-9.]+)", out)
+    assert m and b, out[-3000:]
+    record("Soil slopes", "Griffiths & Lane's 2:1 slope in 300 Voronoi blocks (tutorial): fos(), Bishop on the blocks' ground",
+           float(m.group(1)), float(b.group(1)), "Bishop's critical circle of the slope itself", rtol=0.01)
+    assert abs(float(m.group(1)) / float(b.group(1)) - 1) < 0.01, out[-3000:]
+    sr = re.search(r"strength reduction[^:]*: ([0-9.]+)", out)
+    assert sr and float(sr.group(1)) > float(m.group(1)), out[-3000:]
+    assert os.path.getsize(str(tmp_path / "report.md")) > 0
+
+
+def test_water_and_earthquake_tutorial_matches_hoek_and_bray(tmp_path):
+    """The manual's loads tutorial: Hoek & Bray's plane failure dry, with 2 m of water on the bedding and with
+    kh = 0.1, each by strength reduction within 1 % of the closed form it prints."""
+    out = _run_tutorial("tutorial_water_earthquake.py", tmp_path)
+    rows = re.findall(r"^(dry|water, zw 2 m|kh 0\.1) +FS ([0-9.]+) by strength reduction, Hoek & Bray ([0-9.]+)", out, re.M)
+    assert [r[0] for r in rows] == ["dry", "water, zw 2 m", "kh 0.1"], out[-3000:]
+    for name, fs, closed in rows:
+        record("Rock slopes", "Hoek & Bray's plane failure with a tension crack, %s (tutorial): fos()" % name, float(fs),
+               float(closed), "Hoek & Bray, plane failure", rtol=0.01)
+        assert abs(float(fs) / float(closed) - 1) < 0.01, (name, fs, closed)
+    assert float(rows[1][1]) < float(rows[0][1]) and float(rows[2][1]) < float(rows[0][1])  # both loads weaken it
