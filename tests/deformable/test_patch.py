@@ -10,6 +10,7 @@ with the block's: the same E and ν as unscaled, in half the steps). Fails on da
 import pytest
 
 from conftest import run_scene
+from verification import record
 
 # three seeds, plane stress and plane strain, ν = 0, 0.2, 0.3, 0.45
 CASES = [(0.2, False, 1), (0.45, True, 2), (0.3, True, 3), (0.0, False, 2), (0.45, False, 3)]
@@ -24,6 +25,12 @@ def test_plate_returns_material_constants(nu, plane_strain, seed):
     print("nu=%g %s seed %d: deformable E %.4g (%+.2f %%) nu %.4f; rigid E %.4g (%+.2f %%) nu %.4f; dt ratio %.3f"
           % (nu, "plane strain" if plane_strain else "plane stress", seed, d["E"], 100 * (d["E"] / E - 1), d["nu"],
              r["E"], 100 * (r["E"] / E - 1), r["nu"], d["dt"] / r["dt"]))
+    where = "ν %g, %s, seed %d" % (nu, "plane strain" if plane_strain else "plane stress", seed)
+    record("Waves and elasticity", "patch test, 400 deformable Voronoi blocks (%s): Young's modulus" % where, d["E"], E,
+           "the material's E", rtol=0.01, unit="Pa")
+    if nu > 0:
+        record("Waves and elasticity", "patch test, 400 deformable Voronoi blocks (%s): Poisson's ratio" % where, d["nu"], nu,
+               "the material's ν", tolerance="±%g" % (0.01 * max(nu, 0.1)))
     assert d["welded"] > 1000, "the plate's as-built joints must be welded"
     assert d["E"] == pytest.approx(E, rel=0.01)
     assert d["nu"] == pytest.approx(nu, abs=0.01 * max(nu, 0.1))

@@ -15,6 +15,7 @@ import sys
 import pytest
 
 from conftest import run_scene
+from verification import record
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "yade"))
 from yaderun import run_ok  # noqa: E402
@@ -34,6 +35,8 @@ def test_plate_carries_the_material_strength(phi, seed):
     print("phi %g seed %d: plateau %.4g (%+.2f %% of %.4g), blocks' mean sxx %+.2f %%, %d/%d yielded, welded %s, plastic area %.1e"
           % (phi, seed, plateau(r), 100 * (plateau(r) / q - 1), q, 100 * (-r["mean_stress"][0] / q - 1), r["yielded"], r["n"],
              r["welded"], r["plastic_area"]))
+    record("Plastic blocks", "plate of 100 plastic Voronoi blocks in uniaxial compression (φ %g°, seed %d): strength" % (phi, seed),
+           plateau(r), q, "2c cos φ / (1 − sin φ)", rtol=0.02, unit="Pa")
     assert plateau(r) == pytest.approx(q, rel=0.02)
     assert -r["mean_stress"][0] == pytest.approx(q, rel=0.02)
     assert r["yielded"] == r["n"]  # a uniform stress: every block at the surface

@@ -11,6 +11,7 @@ import os
 import re
 
 from conftest import SRC, run_yade
+from verification import record
 
 
 def test_dynamic_stage_energy_balance_closes(tmp_path):
@@ -21,6 +22,8 @@ def test_dynamic_stage_energy_balance_closes(tmp_path):
     print(m.group(0))
     terms = dict((k, float(v)) for k, v in (kv.rsplit(" ", 1) for kv in m.group(1).split(", ")))
     assert terms["gravWork"] < -1e5 and terms["plastDissip"] > 0.5 * -terms["gravWork"]  # the wedge slid
+    record("Energy", "the main example's undamped landslide, 3 s: O.energy's balance, % of the work of gravity",
+           float(m.group(2)), 0.0, "closes (no energy created or lost)", tolerance="within ±1 %", unit="%")
     assert abs(float(m.group(2))) < 1.0
     # the printed terms are the stage's changes: they add up to the printed error (on 12edc9b elastPotential was
     # the stored energy itself, and the terms added up to +0.8 % of the work of gravity against -0.299 % printed)

@@ -11,6 +11,7 @@ import os
 import pytest
 
 from conftest import HERE, run_yade
+from verification import record
 
 
 def result_of(script, *args):
@@ -28,6 +29,8 @@ def test_cohesive_joint_set_gives_the_planar_wedge_closed_form(pattern):
     r = result(pattern, "50", "30", "35", "ductile", "after")
     assert r["n_set"] > 3 and r["on_plane"] == r["n_set"] and r["missed"] == 0  # every joint of the plane, only those
     assert r["rock_strength"] > 10 * r["n_set"]  # the rest keep the rock's
+    record("Rock slopes", "a 20 m wedge on a daylighting joint set (ψ 35°, c 50 kPa, φ 30°), %s blocks: strength reduction"
+           % pattern, r["fs"], r["closed"], "Hoek & Bray, plane failure", rtol=0.01)
     assert r["fs"] == pytest.approx(r["closed"], rel=0.01), r
     assert r["lo"] <= r["closed"] * 1.005 and r["hi"] >= r["closed"] * 0.995, r
 

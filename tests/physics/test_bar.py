@@ -17,6 +17,7 @@ from math import sqrt
 import pytest
 
 from conftest import run_scene
+from verification import record
 
 E, NU, RHO = 1e8, 0.2, 2000.0
 
@@ -29,6 +30,8 @@ def test_long_wave_speed():
     T = 2 * (t2 - t1)
     c_num = 2 * r["L"] / T
     print("c_num=%.6g c_cf=%.6g rel.err=%.2e (T=%.6g s)" % (c_num, c_cf, c_num / c_cf - 1, T))
+    record("Waves and elasticity", "rigid-block bar, 100 blocks: long-wave speed", c_num, c_cf, "√(E′/ρ), plane strain",
+           rtol=0.03, unit="m/s")
     assert r["n_inter"] == 99 and r["n_intact"] == 99
     assert r["kn_l"] == pytest.approx(e_prime, rel=1e-9)
     assert c_num == pytest.approx(c_cf, rel=0.03)

@@ -23,6 +23,7 @@ from math import radians, degrees, sin, cos, tan, sqrt
 import pytest
 
 from conftest import run_scene
+from verification import record
 
 G = 9.81
 PHI = 30.0
@@ -59,6 +60,8 @@ def test_slides_with_closed_form_acceleration(psi):
     r = run_scene("incline", {"psi": psi, "phi": PHI})
     a_cf = a_closed_form(psi)
     print("psi=%g: a_num=%.6g a_cf=%.6g rel.err=%.2e" % (psi, r["a"], a_cf, r["a"] / a_cf - 1))
+    record("Blocks and joints", "block sliding down a %g° incline, φ = %g°: acceleration" % (psi, PHI), r["a"], a_cf,
+           "g (sin ψ − cos ψ tan φ)", rtol=0.01, unit="m/s²")
     assert r["a"] == pytest.approx(a_cf, rel=0.01)
 
 

@@ -14,6 +14,7 @@ _HERE = os.path.dirname(os.path.abspath(__file__))
 _PY = os.path.normpath(os.path.join(_HERE, "..", "..", "py"))
 if _PY not in sys.path:
     sys.path.insert(0, _PY)
+sys.path.insert(0, os.path.join(_HERE, "..", "support"))  # verification.record
 
 
 def load_limit_equilibrium():

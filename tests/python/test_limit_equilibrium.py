@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from conftest import load_limit_equilibrium
+from verification import record
 
 le = load_limit_equilibrium()
 Layer, Slope, Circle = le.Layer, le.Slope, le.Circle
@@ -52,6 +53,8 @@ def test_published_verruijt_bishop_critical_circle():
     s = _verruijt_slope()
     toe = le.critical_circle(s, (-4, 10), (5, 16), nx=15, ny=15, through=(0.0, 0.0),
                              method="bishop", n=50, refine=3)
+    record("Limit equilibrium", "Verruijt's 1:2 slope (code_aster ssnp006, Plaxis): Bishop's critical circle through the toe",
+           toe.fs, 1.534, "Verruijt's simplified Bishop, as published", tolerance="±0.02")
     assert toe.fs == pytest.approx(1.534, abs=0.02)
     assert toe.best.slices.y_base.min() > -2.0  # stays in the 2 m foundation
     free = le.critical_circle(s, (-2, 8), (5, 14), nx=7, ny=7, r_range=(4, 16), nr=25,
