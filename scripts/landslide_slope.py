@@ -5,7 +5,7 @@
 A 10 m slope of staggered bricks (or Voronoi blocks, or columns), a joint plane at 35 deg from the toe to
 a tension crack, Table 1's material, in the stages of slope.SlopeModel: bond; gravity (friction held at
 tan(phi) = 5); Table 2 and limit equilibrium; the surface of slipping joints; optionally slope.fos; the
-undamped slide. Every FS in one table; PNGs, VTK, plots and a report in --out (README: "The main example").
+undamped slide. Every FS in one table; PNGs, VTK, plots and a report in --out (manual: "The seed paper's landslide").
 """
 import argparse
 import ast

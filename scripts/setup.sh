@@ -17,6 +17,8 @@ PACKAGES=(
   libgl-dev                             # the qt view's functors (Gl1_*) draw with OpenGL
   xvfb python3-pil                      # GUI tests (tests/gui, scripts/run_in_qt_view.py): virtual X display, PNG pixels
   openmpi-bin python3-mpi4py            # distributed runs with yade.mpy (mpiexec; tests/mpi/)
+  python3-sphinx python3-myst-parser python3-sphinx-rtd-theme   # the manual (scripts/build_docs.sh)
+  chromium                              # tests/docs: the manual's pages rendered headless (a screenshot)
 )
 
 if [ "$(id -u)" -eq 0 ]; then

@@ -48,7 +48,7 @@ def build_scene(sb, material=None, thickness=1.0):
 
 def break_crack(sb, tol=None, counted=None):
     """Break (RbsmPhys.breakJoint) every joint lying on the crack line x = xc above yc. Returns the
-    number of joints broken (of those for which *counted*(I) is true, if given)."""
+    number of joints broken (of those for which ``counted(I)`` is true, if given)."""
     from yade import O
     if sb.crack is None:
         return 0
@@ -200,7 +200,7 @@ def _record_cuts(polylines):
 
 def break_joints(polylines, tol=None, counted=None):
     """Break (RbsmPhys.breakJoint) every joint on the *polylines* (:func:`joints_on`). Returns the
-    number broken (of those for which *counted*(I) is true, if given)."""
+    number broken (of those for which ``counted(I)`` is true, if given)."""
     n = 0
     for I in joints_on(polylines, tol):
         I.phys.breakJoint()

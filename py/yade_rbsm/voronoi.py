@@ -98,13 +98,18 @@ def voronoi_tessellation(slope, n=None, spacing=None, seed=0, min_distance=0.0, 
 
     slope: the polygon [(x, y), ...] (m), simple, either orientation (a clockwise one is reversed;
         the blocks are always counter-clockwise); collinear vertices are allowed.
+
     Exactly one of:
-        n: number of random sites, uniform inside the slope;
-        spacing: typical block size (m): n = round(slope area / spacing²), at least 1;
-        sites: the sites [(x, y), ...] themselves (they may lie outside the slope).
+
+    - n: number of random sites, uniform inside the slope;
+    - spacing: typical block size (m): n = round(slope area / spacing²), at least 1;
+    - sites: the sites [(x, y), ...] themselves (they may lie outside the slope).
+
     seed: integer seed of the random sites (std::mt19937_64): the same seed gives the same blocks.
+
     min_distance: random sites at least this far apart (m; 0: plain uniform sites). About half the
         spacing gives blocks of more even size (fewer small blocks that shorten the time step).
+
     min_area: pieces of smaller area (m²) are dropped, leaving a hole reported in dropped and
         dropped_area; default 1e-9 × the mean cell area (slope area / number of sites), which drops
         only the slivers that rounding to double could make degenerate.
