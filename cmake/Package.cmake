@@ -7,6 +7,19 @@ set(RBSM_VERSION 0.1.0 CACHE STRING "Version of the yade-rbsm Debian package")
 # Debian wants a copyright file with every package; cmake --install puts it there too.
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION /usr/share/doc/yade-rbsm RENAME copyright)
 
+# What a collaborator starts from: the README, the examples the manual teaches, and the manual itself (HTML,
+# built by scripts/build_docs.sh; refused with that advice when it is not built, never left out silently).
+install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION /usr/share/doc/yade-rbsm)
+install(FILES ${PROJECT_SOURCE_DIR}/scripts/first_scene.py ${PROJECT_SOURCE_DIR}/scripts/tutorial_jointed_slope.py
+              ${PROJECT_SOURCE_DIR}/scripts/tutorial_soil_slope.py ${PROJECT_SOURCE_DIR}/scripts/tutorial_water_earthquake.py
+              ${PROJECT_SOURCE_DIR}/scripts/landslide_slope.py ${PROJECT_SOURCE_DIR}/scripts/mixed_scene_demo.py
+              ${PROJECT_SOURCE_DIR}/scripts/distributed_bricks.py
+        DESTINATION /usr/share/doc/yade-rbsm/examples)
+install(CODE "if(NOT EXISTS \"${PROJECT_BINARY_DIR}/docs/html/index.html\")
+  message(FATAL_ERROR \"yade-rbsm: the manual is not built (${PROJECT_BINARY_DIR}/docs/html): run scripts/build_docs.sh first\")
+endif()")
+install(DIRECTORY ${PROJECT_BINARY_DIR}/docs/html DESTINATION /usr/share/doc/yade-rbsm PATTERN .buildinfo EXCLUDE)
+
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME yade-rbsm)
 set(CPACK_PACKAGE_VERSION ${RBSM_VERSION})

@@ -9,6 +9,7 @@ import tempfile
 
 import pytest
 
+SRC = os.path.abspath(os.environ.get("RBSM_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", "..")))
 BUILD_DIR = os.path.abspath(os.environ.get("RBSM_BUILD_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build")))
 YADE_LIB_DIR = "/usr/lib/x86_64-linux-gnu/yade-double"
 PLUGIN = "./usr/lib/x86_64-linux-gnu/yade-double/libpkg_rbsm.so"
@@ -23,6 +24,8 @@ def run(cmd, **kw):
 
 @pytest.fixture(scope="module")
 def deb(tmp_path_factory):
+    if not os.path.isfile(os.path.join(BUILD_DIR, "docs", "html", "index.html")):  # the package carries the manual
+        run(["bash", os.path.join(SRC, "scripts", "build_docs.sh")], env=dict(os.environ, BUILD_DIR=BUILD_DIR), timeout=600)
     config = os.path.join(BUILD_DIR, "CPackConfig.cmake")
     assert os.path.isfile(config), "no %s: the build does not configure a package (include(Package))" % config
     out = tmp_path_factory.mktemp("deb")
@@ -64,7 +67,10 @@ def test_contents(deb):
     files = files_of(deb)
     for f in (PLUGIN, DIST + "/yade_rbsm_tessellation.so", DIST + "/yade_rbsm/__init__.py",
               DIST + "/yade_rbsm/blocks.py", DIST + "/yade_rbsm/mpi.py", DIST + "/yade_rbsm/io/__init__.py",
-              "./usr/share/doc/yade-rbsm/copyright"):
+              "./usr/share/doc/yade-rbsm/copyright", "./usr/share/doc/yade-rbsm/README.md",
+              "./usr/share/doc/yade-rbsm/html/index.html", "./usr/share/doc/yade-rbsm/html/reference/classes.html",
+              "./usr/share/doc/yade-rbsm/html/tutorials/jointed_slope.html",
+              "./usr/share/doc/yade-rbsm/examples/first_scene.py", "./usr/share/doc/yade-rbsm/examples/landslide_slope.py"):
         assert f in files, (f, files)
     assert not [f for f in files if "__pycache__" in f or f.endswith(".pyc")], files
     # nothing outside YADE's plugin directory, Python's dist-packages and the package's doc
@@ -135,3 +141,7 @@ def test_yade_runs_the_extracted_package(deb, tmp_path):
                PYTHONPATH=os.path.join(root, DIST), PYTHONDONTWRITEBYTECODE="1")
     out = run(["/usr/bin/yade", "-n", "-x", str(script)], env=env, cwd=str(tmp_path), timeout=300)
     assert "PACKAGE-OK" in out, out
+    # the first example the package ships, as a collaborator runs it from /usr/share/doc/yade-rbsm/examples
+    example = os.path.join(root, "usr/share/doc/yade-rbsm/examples/first_scene.py")
+    out = run(["/usr/bin/yade", "-n", "-x", example], env=env, cwd=str(tmp_path), timeout=300)
+    assert "slipping points [True, True]" in out, out[-2000:]
