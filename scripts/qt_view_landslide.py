@@ -1,6 +1,7 @@
 """The landslide example in YADE's qt view: blocks coloured by displacement, joints by state.
 
-Makes the picture docs/landslide_qt_view.png, on a virtual display (Xvfb):
+Makes the picture out/qt_view/landslide_qt_view.png (--out; docs/ keeps the manual's copy), on a virtual
+display (Xvfb):
 
     /usr/bin/python3 scripts/run_in_qt_view.py scripts/qt_view_landslide.py
 
@@ -23,7 +24,7 @@ from yade_rbsm import gui, omega, slope as sl
 
 ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 # yade runs a script in its own globals: __file__ is yade's launcher, sys.argv[0] this script
-ap.add_argument("--out", default=os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])), "..", "docs", "landslide_qt_view.png"))
+ap.add_argument("--out", default=os.path.join("out", "qt_view", "landslide_qt_view.png"))  # docs/ has the tracked copy
 ap.add_argument("--time", type=float, default=0.4, help="simulated time after the release [s]")
 ap.add_argument("--stay", action="store_true", help="keep the view open (no picture, no exit)")
 args = ap.parse_args(sys.argv[1:])
@@ -60,4 +61,5 @@ print("t = %.2f s: largest displacement %.3f m" % (O.time, dmax))
 
 gui.view(joints=True, size=(1100, 600))
 if not args.stay:
+    os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
     gui.save_view_and_exit(args.out, delay=2.0)

@@ -40,7 +40,7 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--results", default="")
     ap.add_argument("--save", default="")
-    ap.add_argument("--png", default=os.path.join(ROOT, "docs", "slope_stress_fs.png"))
+    ap.add_argument("--png", default=os.path.join("out", "slope_stress_fs.png"))  # docs/ has the tracked copy
     a = ap.parse_args()
     if a.results:
         rows = [json.loads(l[len("RESULT "):] if l.startswith("RESULT ") else l) for l in open(a.results) if l.strip()]
@@ -95,6 +95,7 @@ def main():
         ax.set_ylim(0.93, 1.07)
         fig.legend(*ax.get_legend_handles_labels(), fontsize=7, loc="lower center", ncol=2, frameon=False)
         fig.subplots_adjust(left=0.13, right=0.97, bottom=0.27, top=0.93)
+        os.makedirs(os.path.dirname(os.path.abspath(a.png)), exist_ok=True)
         fig.savefig(a.png, dpi=110)
         print("plot: %s" % a.png)
 
