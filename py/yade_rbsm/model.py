@@ -235,6 +235,89 @@ class SlopeModel:
         st = self._record("pseudo-static", dict(kh=kh, kv=kv, towards=towards), dict(gravity=list(g)), w0)
         return self._settle_again(settle) if settle else st
 
+    def set_earthquake(self, record, direction=1):
+        """A ground-acceleration history (:class:`earthquake.Record`) along the model's +x (*direction* +1) or −x
+        for the dynamic stages that follow (:func:`earthquake.apply`: the model runs in its rigid base's frame,
+        displacements relative to the base); None stops it. Recorded."""
+        from . import earthquake
+        w0 = time.time()
+        earthquake.apply(record, direction=direction)
+        figures = dict(pga_g=record.pga / earthquake.G, record_duration=record.duration) if record is not None else {}
+        return self._record("earthquake", dict(record=getattr(record, "name", None), direction=direction), figures, w0)
+
+    def yield_acceleration(self, towards=1, rtol=0.01, kh_start=0.1, kh_max=1.0, settle=None, **fos_kw):
+        """The yield acceleration k_y: the horizontal pseudo-static coefficient (towards the face, *towards*) at
+        which the factor of safety is 1, by regula falsi on FS(kh) − 1 to *rtol* of k_y. Each FS is
+        :func:`slope.fos` (*fos_kw*; default rtol 0.002) after settling under kh (*settle*: settle's arguments) from
+        the state it was called in, which it leaves as it was. A slope that cannot settle under kh counts as
+        failing. Returns k_y (0 if the slope fails statically); recorded with the trials."""
+        from yade import O
+        from . import slope as sl
+        from .fos import _scale, fos
+        rtol = number("SlopeModel.yield_acceleration", "rtol", rtol, 0, 0.5, low_open=True)
+        kh_max = number("SlopeModel.yield_acceleration", "kh_max", kh_max, 0, 1, low_open=True)
+        kh = number("SlopeModel.yield_acceleration", "kh_start", kh_start, 0, kh_max, low_open=True)
+        fos_kw = dict(dict(rtol=0.002, probe=False), **fos_kw)
+        settle_kw = dict(dict(tol=1e-4, max_steps=60000, check=200), **(settle or {}))
+        w0, mark, trials = time.time(), "rbsm_yield_acceleration", []
+        O.saveTmp(mark)
+
+        ids = [b.id for b in _blocks(O)]
+        d_fail = fos_kw.get("d_fail") or 0.05 * _scale(ids)[0]  # fos()'s runaway displacement
+
+        def excess(k):  # FS(k) - 1, from the state the method was called in
+            O.loadTmp(mark)
+            before = {i: O.bodies[i].state.pos for i in ids}
+            sl.set_seismic(k, towards=towards)
+            sl.settle(**settle_kw)
+            moved = max((O.bodies[i].state.pos - before[i]).norm() for i in ids)
+            fs = 0.0  # a slope that slid while kh came on fails there (settled elsewhere, jammed: not this slope)
+            if moved < d_fail:
+                try:
+                    fs = fos(self.sb, **fos_kw).fs
+                except ValueError:  # out of equilibrium under kh: it fails there
+                    pass
+            trials.append([k, fs])
+            return fs - 1.0
+
+        try:
+            lo, f_lo = 0.0, excess(0.0)
+            if f_lo <= 0:
+                k_y = 0.0
+            else:
+                f_hi = excess(kh)
+                while f_hi > 0 and kh < kh_max:
+                    lo, f_lo, kh = kh, f_hi, min(2 * kh, kh_max)
+                    f_hi = excess(kh)
+                if f_hi > 0:
+                    raise ValueError("SlopeModel.yield_acceleration: FS is %.3f at kh_max = %g: no yield below it"
+                                     % (f_hi + 1, kh_max))
+                hi = kh
+                while hi - lo > rtol * hi:
+                    if f_hi == -1.0:  # hi slid away: no FS to interpolate, halve
+                        k = 0.5 * (lo + hi)
+                    else:  # regula falsi, kept off the ends
+                        k = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
+                        k = min(max(k, lo + 0.1 * (hi - lo)), hi - 0.1 * (hi - lo))
+                    f = excess(k)
+                    if f > 0:
+                        lo, f_lo = k, f
+                    else:
+                        hi, f_hi = k, f
+                # FS(kh) is smooth below k_y: the two measured trials nearest it, extended to FS = 1
+                measured = sorted(t for t in trials if t[1] > 1.0)
+                k_y = 0.5 * (lo + hi)
+                if len(measured) >= 2:
+                    (k1, fs1), (k2, fs2) = measured[-2:]
+                    if fs2 < fs1:
+                        k_y = min(max(k2 + (1.0 - fs2) * (k2 - k1) / (fs2 - fs1), lo), hi)
+        finally:
+            O.loadTmp(mark)
+        self._record("yield acceleration", dict(towards=towards, rtol=rtol), dict(ky=k_y, trials=len(trials)), w0,
+                     [["yield acceleration k_y = %.4g (kh at FS = 1)" % k_y, None, "%d trials: %s" % (
+                         len(trials), ", ".join("kh %.4g FS %.3f" % (k, f) for k, f in trials))]])
+        return k_y
+
     def _settle_again(self, settle):
         return self.settle(**dict(dict(name="equilibrium"), **(settle if isinstance(settle, dict) else {})))
 

@@ -475,6 +475,9 @@ _scene = _sibling("slope_scene")
 
 def __getattr__(name):
     """The joint-set builder (joint_sets.py: JointSet, Trace, jointset_blocks), loaded when first used."""
+    if name == "set_earthquake":  # earthquake.py: a ground-acceleration record in the model's base frame
+        from .earthquake import apply
+        return apply
     if name in ("JointSet", "Trace", "jointset_blocks", "jointset_blocks_dxf", "cut_by_joint_sets"):
         from . import joint_sets
         return getattr(joint_sets, name)

@@ -484,6 +484,16 @@ def set_water(phreatic, joints="sets", unit_weight=9810.0):
 _STATIC_GRAVITY_TAG = "yade_rbsm.static_gravity"
 
 
+def static_gravity():
+    """The scene's static gravity: NewtonIntegrator's, kept in O.tags the first time a pseudo-static or earthquake
+    load changes it (so that both can give it back)."""
+    from yade import O
+    from . import omega
+    if _STATIC_GRAVITY_TAG not in O.tags.keys():
+        O.tags[_STATIC_GRAVITY_TAG] = json.dumps(list(omega.newton(O).gravity))
+    return json.loads(O.tags[_STATIC_GRAVITY_TAG])
+
+
 def set_seismic(kh, kv=0.0, towards=1):
     """Pseudo-static earthquake load in the block model: gravity becomes g (towards kh, -(1 - kv)) with g the
     static gravity's magnitude (kept in O.tags the first time, so that set_seismic(0) gives it back): a
@@ -499,9 +509,7 @@ def set_seismic(kh, kv=0.0, towards=1):
     if towards not in (1, -1):
         raise ValueError("set_seismic: towards must be +1 (+x) or -1 (-x), the side the face looks to (got %r)" % (towards,))
     newton = omega.newton(O)
-    if _STATIC_GRAVITY_TAG not in O.tags.keys():
-        O.tags[_STATIC_GRAVITY_TAG] = json.dumps(list(newton.gravity))
-    g0 = json.loads(O.tags[_STATIC_GRAVITY_TAG])
+    g0 = static_gravity()
     gm = math.sqrt(sum(c * c for c in g0))
     if gm == 0:
         raise ValueError("set_seismic: NewtonIntegrator.gravity is zero: there is no weight to load pseudo-statically")
