@@ -4,19 +4,13 @@
 
 A 10 m slope of staggered bricks (or Voronoi blocks, or columns), a joint plane at 35 deg from the toe to
 a tension crack, Table 1's material, in the stages of slope.SlopeModel: bond; gravity (friction held at
-tan(phi) = 5); Table 2 and limit equilibrium; the surface of slipping joints; optionally slope.fos; the
-undamped slide. Every FS in one table; PNGs, VTK, plots and a report in --out (manual: "The seed paper's landslide").
+tan(phi) = 5); Table 2 and limit equilibrium; the surface of slipping joints; optionally slope.fos, water
+and an earthquake; the undamped slide. Every FS in one table; PNGs, VTK, plots and a report in --out.
 """
-import argparse
-import ast
-import math
-import os
-import sys
-
+import argparse, ast, math, os, sys
 from yade import O
-
 import yade_rbsm as yr
-from yade_rbsm import mpi as rmpi, safety, slope as sl
+from yade_rbsm import earthquake as eq, mpi as rmpi, safety, slope as sl
 
 
 def kv(text):  # KEY=VALUE of --engines and --fos
@@ -46,6 +40,8 @@ opt("--engines", type=kv, nargs="*", default=[], metavar="KEY=VALUE",
     help="yade_rbsm.engines arguments, e.g. impact_safety=0.8 update_tolerance=1e-4 sorted_loop=True")
 opt("--vtk-every", type=float, default=0.1, help="VTK snapshot period of the dynamic stage [s]")
 opt("--plot-every", type=int, default=150, help="yade.plot recording period [steps]")
+opt("--water", type=float, metavar="ZW", help="water in the joints: a phreatic line from the toe to ZW m up the crack")
+opt("--earthquake", nargs="?", const="synthetic", metavar="CSV", help="shake the dynamic stage: a record (t [s], a [g]) or the shipped one")
 opt("--mpi", type=int, nargs="?", const=0, metavar="N", help="distributed with yade.mpy, N ranks (0: mpiexec's)")
 args = ap.parse_args(sys.argv[1:])
 
@@ -103,6 +99,10 @@ if master:
     if args.strength_reduction:
         r = model.fos(**dict(dict(rtol=0.01, tol=1e-3, d_fail=0.1, probe=False, circle=False, verbose=True), **dict(args.fos)))
         print("  %s\n  %s" % (r.strength_reduction, r.strength_reduction.criterion))
+if args.water:  # u = gamma_w depth in the joints below the line; equilibrium again with the friction held, as before
+    model.set_water([(toe, y0), (xcrack, ycrack + args.water)], "all", settle=dict(hold_friction=5.0, density_scaling=False, tol=args.tol))
+if args.earthquake:  # along +x, into the slope (the face looks to -x): its positive half throws the wedge out
+    model.set_earthquake(eq.Record.synthetic() if args.earthquake == "synthetic" else eq.Record.from_csv(args.earthquake))
 model.run(args.time, chunks=3, snapshots=os.path.join(args.out, "landslide"), slip=slip, vtk=os.path.join(args.out, "vtk"),
           vtk_every=args.vtk_every, period=args.plot_every)
 if mp is None:

@@ -38,4 +38,10 @@ quake = model.fos()
 for name, r, closed in (("dry", dry, hoek_bray()), ("water, zw 2 m", wet, hoek_bray(U=0.5 * gw * zw * A)),
                         ("kh 0.1", quake, hoek_bray(kh=0.1))):
     print(f"{name:14s} FS {r.fs:.3f} by {r.method}, Hoek & Bray {closed:.3f} ({100 * (r.fs / closed - 1):+.1f} %)")
+model.set_seismic(0)                        # static again; the yield acceleration: kh at FS = 1
+ky = model.yield_acceleration(towards=-1)
+lo, hi = 0.0, 1.0                           # Hoek & Bray's kh at FS = 1, by bisection
+for _ in range(50):
+    lo, hi = ((lo + hi) / 2, hi) if hoek_bray(kh=(lo + hi) / 2) > 1 else (lo, (lo + hi) / 2)
+print(f"yield acceleration k_y {ky:.4f}, Hoek & Bray {lo:.4f} ({100 * (ky / lo - 1):+.1f} %)")
 model.report(os.path.join(out, "report.md"))

@@ -56,9 +56,10 @@ class Record:
 
     @classmethod
     def from_csv(cls, path, time="t", acceleration="a", units="g"):
-        """A record from a CSV file with a header row naming the *time* and *acceleration* columns."""
+        """A record from a CSV file with a header row naming the *time* and *acceleration* columns (lines starting
+        with # before it are comments)."""
         with open(path, newline="") as f:
-            rows = list(csv.DictReader(f))
+            rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
         if not rows or time not in rows[0] or acceleration not in rows[0]:
             raise ValueError("Record %s: needs columns %r and %r in its header (found %s)"
                              % (path, time, acceleration, ", ".join(rows[0]) if rows else "no rows"))
@@ -66,6 +67,13 @@ class Record:
             return cls([r[time] for r in rows], [r[acceleration] for r in rows], units, name=path)
         except ValueError as e:
             raise ValueError(str(e).replace("Record %r" % path, "Record %s" % path)) from None
+
+    @classmethod
+    def synthetic(cls):
+        """A 6 s synthetic record shipped with the plugin (PGA 0.3 g; data/synthetic_record.csv says how it was made):
+        for trying a model, not for design."""
+        import os
+        return cls.from_csv(os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "synthetic_record.csv"))
 
     def at(self, time):
         """The ground acceleration at *time* [m/s²] (linear between samples, 0 outside the record)."""

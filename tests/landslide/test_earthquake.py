@@ -38,3 +38,19 @@ def test_wedge_slides_by_newmark(amp, freq, cycles):
     import re
     off = float(re.search(r"off by (\S+) % of the work of gravity", out).group(1))
     assert abs(off) < 0.5, off
+
+
+def test_main_example_takes_water_and_an_earthquake(tmp_path):
+    """scripts/landslide_slope.py --water ZW --earthquake: the stages are recorded (joints wet below the line, the
+    shipped synthetic record of PGA 0.3 g), the dynamic stage shakes and its energy balance still closes."""
+    import json
+    import os
+    from conftest import SRC
+    p = run_yade(os.path.join(SRC, "scripts", "landslide_slope.py"), "--small", "--time", "0.3", "--water", "0.5",
+                 "--earthquake", "--no-search", "--probe-steps", "0", "--out", str(tmp_path / "out"), cwd=str(tmp_path))
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    stages = {s["name"]: s for s in json.load(open(str(tmp_path / "out" / "summary.json")))["stages"]}
+    assert stages["water"]["figures"]["joints_wet"] > 10
+    assert stages["earthquake"]["figures"]["pga_g"] == pytest.approx(0.3, rel=1e-3)
+    import re
+    assert abs(float(re.search(r"off by (\S+) % of the work of gravity", p.stdout).group(1))) < 1.0

@@ -7,6 +7,8 @@ import os
 import re
 import subprocess
 
+import pytest
+
 from conftest import SRC, launcher
 from verification import record
 
@@ -73,7 +75,7 @@ def test_soil_slope_tutorial_gives_bishop_with_the_blocks_estimate_beside_it(tmp
 
 def test_water_and_earthquake_tutorial_matches_hoek_and_bray(tmp_path):
     """The manual's loads tutorial: Hoek & Bray's plane failure dry, with 2 m of water on the bedding and with
-    kh = 0.1, each by strength reduction within 1 % of the closed form it prints."""
+    kh = 0.1, each by strength reduction within 1 % of the closed form it prints; its yield acceleration too."""
     out = _run_tutorial("tutorial_water_earthquake.py", tmp_path)
     rows = re.findall(r"^(dry|water, zw 2 m|kh 0\.1) +FS ([0-9.]+) by strength reduction, Hoek & Bray ([0-9.]+)", out, re.M)
     assert [r[0] for r in rows] == ["dry", "water, zw 2 m", "kh 0.1"], out[-3000:]
@@ -82,3 +84,7 @@ def test_water_and_earthquake_tutorial_matches_hoek_and_bray(tmp_path):
                float(closed), "Hoek & Bray, plane failure", rtol=0.01)
         assert abs(float(fs) / float(closed) - 1) < 0.01, (name, fs, closed)
     assert float(rows[1][1]) < float(rows[0][1]) and float(rows[2][1]) < float(rows[0][1])  # both loads weaken it
+    ky, closed = map(float, re.search(r"yield acceleration k_y ([0-9.]+), Hoek & Bray ([0-9.]+)", out).groups())
+    record("Earthquakes", "Hoek & Bray's plane failure with a tension crack (tutorial): yield acceleration k_y", ky, closed,
+           "Hoek & Bray's FS(kh) = 1", rtol=0.01)
+    assert ky == pytest.approx(closed, rel=0.01)

@@ -50,7 +50,7 @@ def test_record_interpolates_and_is_zero_outside():
 
 def test_csv_record(tmp_path):
     p = tmp_path / "kobe.csv"
-    p.write_text("time,acc\n0,0\n0.01,0.1\n0.02,-0.05\n")
+    p.write_text("# a comment\ntime,acc\n0,0\n0.01,0.1\n0.02,-0.05\n")
     r = eq.Record.from_csv(str(p), time="time", acceleration="acc")
     assert r.a[1] == pytest.approx(0.1 * eq.G)
     with pytest.raises(ValueError, match="columns 't' and 'a'"):
