@@ -22,12 +22,12 @@ def table2(rbsm, fellenius=None, title="Table 2 - factor of safety along the sli
     return results_table(rows, title)
 
 
-def le_slope(surface, material=None, c=None, phi=None, density=None, g=9.81):
+def le_slope(surface, material=None, c=None, phi=None, density=None, g=9.81, kh=0.0, kv=0.0):
     """A :class:`limit_equilibrium.Slope` with the ground polyline of a block slope (e.g.
     ``SlopeBlocks.surface``) and one layer with the block material: ``gamma = density·g`` [kN/m³],
     ``c`` [kPa] and ``phi`` [deg] of the joints. Either an RbsmMat (*material*: ``density``,
     ``cohesion`` [Pa], ``frictionAngle`` [rad]) or the values (*c* [Pa], *phi* [rad], *density*
-    [kg/m³]); explicit values win."""
+    [kg/m³]); explicit values win. *kh*, *kv*: the pseudo-static load (:class:`limit_equilibrium.Slope`)."""
     from . import limit_equilibrium as le
     if material is not None:
         c = material.cohesion if c is None else c
@@ -39,7 +39,7 @@ def le_slope(surface, material=None, c=None, phi=None, density=None, g=9.81):
     phi = number("le_slope", "phi", phi, 0, math.pi / 2, high_open=True)
     density = number("le_slope", "density", density, 0, low_open=True)
     return le.Slope([(float(x), float(y)) for x, y in surface],
-                    le.Layer(c=c / 1e3, phi=math.degrees(phi), gamma=density * g / 1e3, name="blocks"))
+                    le.Layer(c=c / 1e3, phi=math.degrees(phi), gamma=density * g / 1e3, name="blocks"), kh=kh, kv=kv)
 
 
 def limit_equilibrium_summary(slope, circle=None, polyline=None, toe=None, search=None, n=50):

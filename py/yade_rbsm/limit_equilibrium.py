@@ -68,6 +68,13 @@ slice base):
   the toe of steep exit circles, the usual ``m_alpha`` limit, configurable
   with ``m_alpha_min``) or when the iteration does not converge.
 
+* Pseudo-static load (``Slope(kh=, kv=)``): each slice carries ``W (1 - kv)``
+  downwards and ``kh W`` horizontally at its mid-height, in the sliding
+  direction.  Fellenius: ``N' = W (1 - kv) cos(alpha) - kh W sin(alpha) - u l``,
+  driving ``W (1 - kv) sin(alpha) + kh W cos(alpha)`` along a polyline's base,
+  ``+ kh W (yc - y_mid) / R`` about a circle's centre; Bishop: ``W (1 - kv)``
+  in the numerator and the circle's driving moment.  Spencer refuses it.
+
 * Spencer (1967), circle: the interslice forces are parallel, at an
   angle theta; the resultant on each slice's sides is::
 
@@ -225,9 +232,14 @@ class Slope:
         pore-pressure ratio in [0, 1); ``u = ru * W / b``.
     gamma_w : float
         unit weight of water, default 9.81 kN/m^3.
+    kh, kv : float, optional
+        pseudo-static load: a horizontal force ``kh W`` at each slice's
+        centroid in the sliding direction and ``kv W`` upwards (the
+        convention of ``slope.set_seismic``); kh in [0, 1), kv in (-1, 1).
     """
 
-    def __init__(self, surface, layers, phreatic=None, ru: float = 0.0, gamma_w: float = GAMMA_W):
+    def __init__(self, surface, layers, phreatic=None, ru: float = 0.0, gamma_w: float = GAMMA_W,
+                 kh: float = 0.0, kv: float = 0.0):
         self.surface = _polyline("ground surface", surface)
         if isinstance(layers, Layer):
             layers = [layers]
@@ -246,6 +258,9 @@ class Slope:
         self.gamma_w = _finite("gamma_w", gamma_w)
         if self.gamma_w < 0.0:
             raise ValueError(f"gamma_w must be >= 0, got {self.gamma_w}")
+        self.kh, self.kv = _finite("kh", kh), _finite("kv", kv)
+        if not (0.0 <= self.kh < 1.0) or not (-1.0 < self.kv < 1.0):
+            raise ValueError(f"kh must be in [0, 1) and kv in (-1, 1), got kh {self.kh}, kv {self.kv}")
         self.phreatic = None if phreatic is None else _polyline("phreatic line", phreatic)
         if self.phreatic is not None and self.ru != 0.0:
             raise ValueError("give either a phreatic line or ru, not both")
@@ -346,7 +361,9 @@ class Slices:
 
     ``x`` slice mid abscissa, ``b`` width, ``alpha`` base angle [rad] (sign:
     positive = driving), ``W`` weight, ``l`` base length, ``u`` base pore
-    pressure, ``c``/``tan_phi`` base strength, ``y_base`` base mid elevation.
+    pressure, ``c``/``tan_phi`` base strength, ``y_base`` base mid elevation,
+    ``y_mid`` the column's mid-height (where a pseudo-static ``kh W`` acts),
+    ``kh``/``kv`` the slope's pseudo-static coefficients.
     """
 
     x: np.ndarray
@@ -361,6 +378,14 @@ class Slices:
     x_entry: float
     x_exit: float
     direction: int  # -1: mass slides towards -x, +1: towards +x
+    y_mid: np.ndarray = None
+    kh: float = 0.0
+    kv: float = 0.0
+
+    @property
+    def Wv(self) -> np.ndarray:
+        """The vertical load W (1 - kv)."""
+        return self.W * (1.0 - self.kv)
 
     @property
     def n(self) -> int:
@@ -446,7 +471,9 @@ def _finish_slices(slope: Slope, xm, b, ybase, alpha_geom, x_entry, x_exit, what
     direction = -1 if drive > 0 else +1
     alpha = alpha_geom if direction == -1 else -alpha_geom
     l = b / np.cos(alpha)
-    return Slices(xm, b, alpha, W, l, u, c, tphi, ybase, float(x_entry), float(x_exit), direction)
+    y_mid = 0.5 * (slope.ground(xm) + ybase)
+    return Slices(xm, b, alpha, W, l, u, c, tphi, ybase, float(x_entry), float(x_exit), direction, y_mid,
+                  slope.kh, slope.kv)
 
 
 def circle_slices(slope: Slope, circle: Circle, n: int = 50) -> Slices:
@@ -622,9 +649,16 @@ def results_table(rows: Iterable[Tuple[str, float, float, float]] | Iterable[Res
     return "\n".join(lines)
 
 
+def _driving(sl: Slices, circle=None) -> np.ndarray:
+    """Each slice's driving force along its base (a polyline's force form), or its driving moment about the
+    circle's centre divided by R: W (1 - kv) sin(alpha) + kh W cos(alpha) or + kh W (yc - y_mid) / R."""
+    arm = np.cos(sl.alpha) if circle is None else (circle.yc - sl.y_mid) / circle.R
+    return sl.Wv * np.sin(sl.alpha) + sl.kh * sl.W * arm
+
+
 def _fellenius(sl: Slices, method: str, surface) -> Result:
-    Np = sl.W * np.cos(sl.alpha) - sl.u * sl.l
-    T = sl.W * np.sin(sl.alpha)
+    Np = sl.Wv * np.cos(sl.alpha) - sl.kh * sl.W * np.sin(sl.alpha) - sl.u * sl.l
+    T = _driving(sl, surface if isinstance(surface, Circle) else None)
     res = float(np.sum(sl.c * sl.l + Np * sl.tan_phi))
     drive = float(np.sum(T))
     notes = ""
@@ -677,8 +711,8 @@ def bishop_circle(
     if not (F > 0):
         F = 1.0
     ca, sa = np.cos(sl.alpha), np.sin(sl.alpha)
-    num0 = sl.c * sl.b + (sl.W - sl.u * sl.b) * sl.tan_phi
-    drive = float(np.sum(sl.W * sa))
+    num0 = sl.c * sl.b + (sl.Wv - sl.u * sl.b) * sl.tan_phi
+    drive = float(np.sum(_driving(sl, circle)))
     it = 0
     while True:
         it += 1
@@ -700,7 +734,7 @@ def bishop_circle(
             raise ValueError(f"Bishop iteration did not converge in {max_iter} iterations for {circle}")
     m = ca + sa * sl.tan_phi / F
     # base normal force implied by vertical equilibrium of each slice
-    Np = (sl.W - sl.c * sl.l * sa / F - sl.u * sl.l * ca) / m
+    Np = (sl.Wv - sl.c * sl.l * sa / F - sl.u * sl.l * ca) / m
     res = F * drive
     return Result("Bishop simplified (circle)", F, float(np.sum(Np)), drive, res, sl.n, circle, it, sl)
 
@@ -773,6 +807,8 @@ def spencer_circle(slope: Slope, circle, n: int = 50, tol: float = 1e-10) -> Res
 
     if not isinstance(circle, Circle):
         circle = Circle(*circle)
+    if slope.kh or slope.kv:
+        raise ValueError("Spencer: no pseudo-static load (kh, kv) in this implementation yet: use Bishop or Fellenius")
     sl = circle_slices(slope, circle, n)
     a, tp = sl.alpha, sl.tan_phi
     drive = sl.W * np.sin(a)

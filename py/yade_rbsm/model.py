@@ -21,6 +21,7 @@ The steps scripts wrote by hand (the bonding step, the friction held while settl
 switched off for the dynamic stage, the progress line by simulated time) are inside the stages.
 """
 import json
+import math
 import time
 from dataclasses import asdict, dataclass, field
 from typing import Dict, List
@@ -351,19 +352,21 @@ class SlopeModel:
         Fellenius on *polyline*, Fellenius and Bishop on *circle* (xc, yc, R) and their critical circles
         through *toe* over the centre grid *search* (dict of x_range, y_range, nx, ny, refine). The strength
         along the surfaces: *c* [Pa] and *phi* [rad], by default the blocks' material's (for a slope cut by
-        joint sets the intact rock's, which the rows then say). Recorded; returns {method: Result,
-        SearchResult or the message of its failure}."""
+        joint sets the intact rock's, which the rows then say). Under a pseudo-static load (:meth:`set_seismic`)
+        the slices carry its kh, kv (towards the sliding side). Recorded; returns {method: Result, SearchResult
+        or the message of its failure}."""
         from . import slope
         from .safety import le_slope, limit_equilibrium_summary
         w0 = time.time()
-        soil = le_slope(self.sb.surface, self.material, g=g, c=c, phi=phi)
+        kh, kv = _pseudo_static()
+        soil = le_slope(self.sb.surface, self.material, g=g, c=c, phi=phi, kh=kh, kv=kv)
         lem = limit_equilibrium_summary(soil, circle=circle, polyline=polyline, toe=toe, search=search, n=n)
         rock = c is None and phi is None and bool(getattr(self.sb, "joint_sets", None) or slope.joint_sets())
         rows = [[k, None if isinstance(v, str) else v.fs, _le_note(v) + ("; the intact rock's c, phi" if rock else "")]
                 for k, v in lem.items()]
         layer = soil.layers[0]
         settings = dict(circle=[round(v, 6) for v in circle] if circle else None, search=search,
-                        c_kPa=layer.c, phi_deg=round(layer.phi, 4), strength="given" if not (c is None and phi is None)
+                        c_kPa=layer.c, phi_deg=round(layer.phi, 4), kh=kh, kv=kv, strength="given" if not (c is None and phi is None)
                         else ("the intact rock's" if rock else "the blocks' material's"))
         self._record("limit equilibrium", settings, {k: r[1] for k, r in zip(lem, rows)}, w0, rows)
         return lem
@@ -483,6 +486,18 @@ class SlopeModel:
             with open(path, "w") as f:
                 f.write(text + "\n")
         return text
+
+
+def _pseudo_static():
+    """(kh, kv) of the scene's pseudo-static load (slope.set_seismic), (0, 0) without one or while a record shakes."""
+    from yade import O
+    from . import earthquake, omega, slope_scene
+    if earthquake.TAG in O.tags.keys() or slope_scene._STATIC_GRAVITY_TAG not in O.tags.keys():
+        return 0.0, 0.0
+    g0 = slope_scene.static_gravity()
+    gm = math.sqrt(sum(v * v for v in g0))
+    gx, gy = omega.newton(O).gravity[0], omega.newton(O).gravity[1]
+    return abs(gx) / gm, 1.0 + gy / gm
 
 
 def _blocks(O):

@@ -33,7 +33,10 @@ m.settle()
 m.give_joint_sets()
 if mode == "ky":
     ky = m.yield_acceleration(towards=-1)   # the face looks to -x
-    print("RESULT " + json.dumps(dict(ky=ky, closed=math.tan(math.radians(phi - psi)), stages=[s.name for s in m.stages])))
+    m.set_seismic(0.1, towards=-1)          # limit equilibrium on the wedge's plane under the scene's kh
+    lem = m.limit_equilibrium(polyline=[(xd, yd), (xc, yc), (xc + 1e-3, H)], c=0, phi=math.radians(phi))
+    print("RESULT " + json.dumps(dict(ky=ky, closed=math.tan(math.radians(phi - psi)), stages=[s.name for s in m.stages],
+                                      le_kh=lem["Fellenius, slip polyline"].fs)))
 else:
     amp, freq, cycles = float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
     rec = earthquake.Record.sine(amp, freq, cycles / freq)

@@ -484,3 +484,70 @@ def test_a_critical_circle_on_the_edge_of_its_search_space_says_so():
     r = le.critical_circle(slope, **high)
     assert r.fs > ref.fs and any("y_range" in w for w in r.warnings), r.warnings
     assert "WARNING: a circle centred beyond y_range" in str(r)
+
+
+# ---------------------------------------------------------------------------
+# pseudo-static load: kh W horizontal in the sliding direction, kv W upwards (issue 40)
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("kh,kv,mirror", [(0.1, 0.0, False), (0.2, 0.05, False), (0.15, -0.1, True)])
+def test_pseudo_static_planar_wedge_is_the_closed_form(kh, kv, mirror):
+    """Fellenius on the wedge's plane with kh, kv: the closed form (c L + (W (1 - kv) cos th - kh W sin th) tan phi)
+    / (W (1 - kv) sin th + kh W cos th), whichever way the slope faces."""
+    c, phi, gamma = 10.0, 30.0, 20.0
+    if mirror:
+        s = Slope([(-30.0, 10.0), (-10.0, 10.0), (0.0, 0.0), (10.0, 0.0)], Layer(c, phi, gamma), kh=kh, kv=kv)
+        r = le.fellenius_polyline(s, [(-20.0, 10.0), (0.0, 0.0)], n=23)
+    else:
+        r = le.fellenius_polyline(_wedge(c=c, phi=phi, kh=kh, kv=kv), [(0.0, 0.0), (20.0, 10.0)], n=23)
+    th, W, L = math.atan2(10.0, 20.0), gamma * 50.0, math.hypot(20.0, 10.0)
+    N = W * (1 - kv) * math.cos(th) - kh * W * math.sin(th)
+    T = W * (1 - kv) * math.sin(th) + kh * W * math.cos(th)
+    assert r.fs == pytest.approx((c * L + N * tand(phi)) / T, rel=1e-10)
+    assert (r.normal, r.shear) == pytest.approx((N, T), rel=1e-10)
+    record("Limit equilibrium", "planar wedge, kh %g, kv %g: Fellenius with the pseudo-static load" % (kh, kv), r.fs,
+           (c * L + N * tand(phi)) / T, "hand calculation", rtol=1e-10)
+
+
+def _mass_moments(s, circle, n=20000):
+    """Area and centroid of the mass between the ground and the circle, by a fine midpoint rule (independent of the
+    slices), and the arc length."""
+    xs = np.linspace(circle.xc - circle.R, circle.xc + circle.R, n + 1)
+    xm, dx = 0.5 * (xs[1:] + xs[:-1]), xs[1] - xs[0]
+    low = circle.yc - np.sqrt(np.maximum(circle.R ** 2 - (xm - circle.xc) ** 2, 0))
+    h = np.maximum(np.interp(xm, s.surface[:, 0], s.surface[:, 1]) - low, 0)
+    A = float(np.sum(h) * dx)
+    xbar = float(np.sum(h * xm) * dx) / A
+    ybar = float(np.sum(h * (low + 0.5 * h)) * dx) / A
+    inside = h > 0
+    x0, x1 = xm[inside][0] - dx / 2, xm[inside][-1] + dx / 2
+    arc = circle.R * (math.asin((x1 - circle.xc) / circle.R) - math.asin((x0 - circle.xc) / circle.R))
+    return A, xbar, ybar, arc
+
+
+@pytest.mark.parametrize("method", ["fellenius", "bishop"])
+def test_pseudo_static_circle_phi_zero_is_the_moment_balance(method):
+    """phi = 0: Fellenius and Bishop are both the moment balance about the centre, FS = c L R / (W (1 - kv) |x̄ - xc|
+    + kh W (yc - ȳ)) with the sliding mass's centroid (x̄, ȳ) and arc length L computed without slices."""
+    c, gamma, kh, kv = 30.0, 18.0, 0.15, 0.05
+    s = _wedge(c=c, phi=0.0, gamma=gamma, kh=kh, kv=kv)
+    circle = le.Circle(-2.0, 22.0, 22.3)
+    fn = le.fellenius_circle if method == "fellenius" else le.bishop_circle
+    r = fn(s, circle, n=400)
+    A, xbar, ybar, arc = _mass_moments(s, circle)
+    W = gamma * A
+    closed = c * arc * circle.R / (W * (1 - kv) * abs(xbar - circle.xc) + kh * W * (circle.yc - ybar))
+    assert r.fs == pytest.approx(closed, rel=2e-4)
+    assert le.bishop_circle(_wedge(c=c, phi=0.0, gamma=gamma), circle, n=400).fs > r.fs  # the load lowers it
+
+
+def test_pseudo_static_lowers_bishop_and_spencer_says_it_has_none():
+    s0, s1 = _wedge(), _wedge(kh=0.1)
+    circle = le.Circle(-2.0, 22.0, 22.3)
+    assert le.bishop_circle(s1, circle).fs < le.bishop_circle(s0, circle).fs
+    assert le.critical_circle(s1, (-6, 6), (12, 26), nx=7, ny=7, through=(0, 0), method="bishop").fs < \
+        le.critical_circle(s0, (-6, 6), (12, 26), nx=7, ny=7, through=(0, 0), method="bishop").fs
+    with pytest.raises(ValueError, match="Spencer.*pseudo-static"):
+        le.spencer_circle(s1, circle)
+    for bad in (dict(kh=-0.1), dict(kh=1.0), dict(kv=1.0), dict(kh=float("nan"))):
+        with pytest.raises(ValueError, match="kh|kv"):
+            _wedge(**bad)
