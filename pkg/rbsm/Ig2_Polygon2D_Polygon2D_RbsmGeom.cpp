@@ -147,8 +147,9 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 
 // New contacts need touch or closeness. An existing joint is followed while it opens as far
 // as its intact springs can hold tension (σt/kn, doubled as margin) so that the law, not the
-// geometry, breaks it. The same distance trims the facing edge to the part that touches.
-[[gnu::always_inline]] inline Real Ig2_Polygon2D_Polygon2D_RbsmGeom::reach(const Interaction& I, bool existing) const
+// geometry, breaks it; a wet joint as far as the smaller block's size, since the water stays in an
+// opening crack (Hoek & Bray's V). The same distance trims the facing edge to the part that touches.
+[[gnu::always_inline]] inline Real Ig2_Polygon2D_Polygon2D_RbsmGeom::reach(const Interaction& I, bool existing, Real minSize) const
 {
 	Real maxSeparation = interactionDistance;
 	if (existing) {
@@ -156,6 +157,7 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 		const IPhys* ip = I.phys.get();
 		const auto*  ph = (ip && ip->getClassIndex() == RbsmPhys::getClassIndexStatic()) ? static_cast<const RbsmPhys*>(ip) : nullptr;
 		if (ph && ph->kn > 0 && ph->tensileStrength > 0 && ph->nIntact() > 0) maxSeparation += 2 * ph->tensileStrength / ph->kn;
+		if (ph && ph->waterForce > 0) maxSeparation = std::max(maxSeparation, minSize);
 	}
 	return maxSeparation;
 }
@@ -187,7 +189,7 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 		return false;
 	c               = rbsm::frozenContact(*frozen, pair.rel);
 	const Real slop = rbsm::roundOffSlop(pair.minSize), dMin = std::min(c.d0, c.d1);
-	return dMin >= -slop || dMin >= -(reach(I, true) + slop); // (reach ≥ 0: asked only for an opening joint)
+	return dMin >= -slop || dMin >= -(reach(I, true, pair.minSize) + slop); // (reach ≥ 0: asked only for an opening joint)
 }
 
 // The exact contact (search and clip, rbsm::edgeContact, or rbsm::followContact where the joint's
@@ -202,7 +204,7 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 	const bool               strained = deformableState(&state1) || deformableState(&state2);
 	const rbsm::PolygonView  va = strained ? shapeNow(pair.A, state1, ownA, heapA) : ownFramePolygon(pair.A, ownA, heapA);
 	const rbsm::PosedPolygon pb { strained ? shapeNow(pair.B, state2, ownB, heapB) : ownFramePolygon(pair.B, ownB, heapB), pair.rel }; // block 2 in block 1's frame
-	const Real               maxSeparation = reach(*I, existing);
+	const Real               maxSeparation = reach(*I, existing, pair.minSize);
 	rbsm::ContactHint        hint;
 	if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
 	const rbsm::ContactQuery query { maxSeparation, g ? &hint : nullptr, hysteresis, pair.minSize };

@@ -26,7 +26,8 @@ public:
 		"Edge-to-edge contact of two :yref:`Polygon2D` blocks (RBSM, seed paper Fig. 3 and eq. 8-9): separating-axis search "
 		"for the reference edge, clipping of the facing edge, integration points along the contact segment. A new contact "
 		"is made when the blocks overlap or are closer than :yref:`interactionDistance<Ig2_Polygon2D_Polygon2D_RbsmGeom.interactionDistance>`; "
-		"an existing one is kept (also open, in tension) until the law removes it.",
+		"an existing one is kept (also open, in tension) until the law removes it; a wet one (:yref:`RbsmPhys.waterForce` > 0) "
+		"while it opens up to the smaller block's size, so that an opening crack keeps its water.",
 		((int, nIP, 2, Attr::triggerPostLoad, "Integration points per contact (1-8, Gauss-Legendre). 2 integrates the force and moment of the linear traction of two rigid blocks exactly; more points resolve partial slip and partial opening along a joint."))
 		((Real, interactionDistance, 0, Attr::triggerPostLoad, "Largest gap [m] at which a new contact is made (0: touching or overlapping)."))
 		((Real, hysteresis, 1e-6, Attr::triggerPostLoad, "Relative margin (fraction of the smaller block size) by which another edge must be better before the reference edge of a contact changes; avoids flip-flopping between the two sides of a shared edge. It must stay well below overlap/size, or a contact keeps an edge that no longer faces the other block."))
@@ -44,7 +45,7 @@ private:
 	struct Pair;
 	enum class Outcome { Touching, Apart, Lost };
 	static void forgetOldShapes(Interaction& I, const Polygon2D& A, const Polygon2D& B);
-	Real        reach(const Interaction& I, bool existing) const;
+	Real        reach(const Interaction& I, bool existing, Real minSize) const;
 	bool        followFrozen(const Pair& pair, const Interaction& I, const RbsmGeom& g, rbsm::EdgeContact& c) const;
 	Outcome     exactContact(const Pair& pair, const State& state1, const State& state2, const shared_ptr<Interaction>& I, RbsmGeom*& g, rbsm::EdgeContact& c);
 	RbsmGeom*   newGeom(const Pair& pair, const State& state1, const State& state2, Interaction& I, const rbsm::SearchMemory& memory);
