@@ -1,10 +1,13 @@
-"""``O.save`` that names the path and the problem (issue 34, item 12). YADE 2023.02a's ``Omega.save`` says
+"""``O.save`` that names the path and the problem (issue 34, item 12), and ``O.load`` that says why a scene
+saved by another build of the plugin fails (item 11: :mod:`save_format`). YADE 2023.02a's ``Omega.save`` says
 "output stream error" for a missing directory, a read-only one or a full disk, without the path, and returns
 without a word, having written nothing, for a path that is a directory. Importing ``yade_rbsm`` wraps
 ``Omega.save``: the same call and the same files, with those cases refused (ValueError) or re-raised with the
 path (OSError), before anything is half written. ``:memory:`` slots (``O.saveTmp``) pass through."""
 import errno
 import os
+
+from . import save_format
 
 _wrapped = None
 
@@ -25,7 +28,7 @@ def _check(path):
 
 
 def install():
-    """Wrap ``yade.wrapper.Omega.save`` and the ``dt`` setter (once per process)."""
+    """Wrap ``yade.wrapper.Omega.save``, ``load`` and the ``dt`` setter (once per process)."""
     global _wrapped
     import yade.wrapper
     if _wrapped is not None:
@@ -36,6 +39,7 @@ def install():
     def save(self, file, quiet=False):
         if not (isinstance(file, str) and file.startswith(":memory:")):
             _check(file)
+            save_format.stamp(self)  # which fields the plugin's classes have: O.load of an old file names them
         try:
             return original(self, file, quiet)
         except RuntimeError as e:
@@ -46,6 +50,18 @@ def install():
     save.__doc__ = original.__doc__
     yade.wrapper.Omega.save = save
     _wrapped = original
+    load = yade.wrapper.Omega.load
+
+    def load_naming_the_format(self, file, quiet=False):
+        try:
+            return load(self, file, quiet)
+        except RuntimeError as e:
+            why = save_format.explain(file, e) if isinstance(file, str) and os.path.isfile(file) else None
+            if why is None:
+                raise
+            raise RuntimeError(why) from e
+    load_naming_the_format.__doc__ = load.__doc__
+    yade.wrapper.Omega.load = load_naming_the_format
 
 
 def _install_dt(Omega):
