@@ -16,9 +16,6 @@ namespace yade {
 
 class BlockMotionWatch {
 public:
-	/// Per body id: the distance from its centroid to its nearest edge line [m] (from the last full estimate,
-	/// or the first time the block is watched).
-	std::vector<Real> inradius;
 	/// Room for nBodies blocks' box poses.
 	void grow(size_t nBodies)
 	{
@@ -45,9 +42,7 @@ private:
 BlockMotionWatch::movesTooFar(const Scene& scene, const Body& b, const Polygon2D& poly, Real maxStepMotion, Real& travelDt, Real& motion, Real& r)
 {
 	const State& s = *b.state;
-	if (size_t(b.id) >= inradius.size()) inradius.resize(size_t(b.id) + 1, 0);
-	r = inradius[b.id];
-	if (!(r > 0)) r = inradius[b.id] = rbsm::centroidInradius(poly.vertices);
+	r = poly.inradius;
 	const Real speed = s.vel.head<2>().norm() + std::abs(s.angVel.z()) * poly.circumradius;
 	motion           = speed * scene.dt;
 	if (speed > 0) travelDt = std::min(travelDt, 0.5 * maxStepMotion * r / speed);

@@ -87,7 +87,7 @@ namespace {
 	// Overlaps deeper than this fraction of the smaller block are outside what the small-strain
 	// joint springs represent: reported (a few times per run), like UDEC's "contact overlap too great".
 	constexpr Real   deepOverlap = 0.05;
-	std::atomic<int> deepOverlapReports { 0 };
+	std::atomic<int> deepOverlapReports { 0 }, passThroughReports { 0 };
 	// After the first five reports an overlap is reported again when it is twice the deepest reported so
 	// far (as a fraction of the smaller block): overlaps that keep growing do not go unnoticed.
 	std::atomic<double> deepestReported { 0 };
@@ -119,6 +119,16 @@ namespace {
 		} else if (deepestSoFar(fraction, 2))
 			std::cerr << overlapLine(I, overlap, fraction, atSetUp, iter, "; twice the deepest overlap reported before: overlaps are growing") + "\n";
 	}
+}
+
+// One block passing through the other (a thin wall hit, a sliver pinched): the run stops after this step.
+void Ig2_Polygon2D_Polygon2D_RbsmGeom::passThrough(const Interaction& I, Real depth, Real halfThickness) const
+{
+	std::ostringstream problem;
+	problem << "overlap by " << depth << " m, deeper than the thinner block's half-thickness " << halfThickness
+	        << " m (Polygon2D.inradius): one is passing through the other (make the joints stiffer, RbsmMat.young or jointKn, "
+	           "the thin block thicker, or the impact slower)";
+	rbsm_report::stopForPair(passThroughReports, *scene, "Ig2_Polygon2D_Polygon2D_RbsmGeom", I.getId1(), I.getId2(), problem.str().c_str());
 }
 
 // The contact is computed in block 1's frame: its vertices and normals are used as stored, only
@@ -287,12 +297,16 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	}
 	g->update(c, pose1, state1, state2);
 	if (g->strainSides) g->addStrainMotion(state1, state2);
-	if (std::max(c.d0, c.d1) > deepOverlap * pair.minSize) {
+	const Real depth = std::max(c.d0, c.d1);
+	// Deeper than the thinner block's half-thickness, the edges cross its centre line and the contact's normal
+	// flips: the springs would push one block through the other. No impact or pinching the springs represent.
+	if (depth > std::min(A.inradius, B.inradius) && A.inradius > 0 && B.inradius > 0) passThrough(*I, depth, std::min(A.inradius, B.inradius));
+	if (depth > deepOverlap * pair.minSize) {
 		// The input is to blame if the contact is made at the first step of the younger block.
 		const auto& bodies  = scene->bodies->body;
 		const long  born    = std::max(bodies[I->getId1()]->iterBorn, bodies[I->getId2()]->iterBorn);
 		const bool  atSetUp = !existing && scene->iter <= std::max(born, 0L);
-		reportDeepOverlap(*I, std::max(c.d0, c.d1), pair.minSize, atSetUp, scene->iter);
+		reportDeepOverlap(*I, depth, pair.minSize, atSetUp, scene->iter);
 	}
 	return true;
 }

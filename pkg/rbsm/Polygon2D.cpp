@@ -35,6 +35,7 @@ void Polygon2D::postLoad(Polygon2D& p)
 	p.circumradius = 0;
 	for (const auto& x : v)
 		p.circumradius = std::max(p.circumradius, x.norm());
+	p.inradius     = rbsm::centroidInradius(v);
 	p.edgeNormals  = rbsm::edgeNormals(v);
 	if (!p.madeFromVertices.empty() && (p.madeFromVertices != p.vertices || p.madeFromThickness != p.thickness)) p.revision++;
 	p.madeFromVertices  = p.vertices;

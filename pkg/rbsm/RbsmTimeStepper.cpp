@@ -357,7 +357,7 @@ Real RbsmTimeStepper::firstContactEstimate()
 		} catch (const std::invalid_argument&) {
 			continue; // a material the joints refuse is reported where they meet it
 		}
-		const Real r = size_t(b->id) < motionWatch.inradius.size() ? motionWatch.inradius[b->id] : rbsm::centroidInradius(poly->vertices);
+		const Real r = poly->inradius;
 		// a given joint stiffness: compliance at most 1/(2 kn) per block, so a pair is at least kn stiff
 		if (mat->jointKn > 0) En = std::max(En, 2 * mat->jointKn * r);
 		if (mat->jointKs > 0) Es = std::max(Es, 2 * mat->jointKs * r);
@@ -397,11 +397,6 @@ void RbsmTimeStepper::fullCheck()
 {
 	lastCheck = scene->iter;
 	if (DeformableState::alive.load(std::memory_order_relaxed) > 0) requireStrainIntegrator();
-	std::vector<Real>& inradius = motionWatch.inradius;
-	inradius.assign(scene->bodies->body.size(), 0);
-	for (const auto& b : scene->bodies->body)
-		if (b)
-			if (const Polygon2D* poly = polygonOf(*b)) inradius[b->id] = rbsm::centroidInradius(poly->vertices);
 	const Real d   = newtonAttribute<Real>(*scene, "damping", 0);
 	newtonDamping  = std::isfinite(d) && d > 0 ? d : 0; // (read first: the estimate asks whether impacts matter)
 	estimate();

@@ -1,5 +1,6 @@
 // Critical time step: closed forms for one block on a spring to a fixed block and for two equal
 // blocks; the Gershgorin estimate is a rigorous lower bound of the exact value.
+#include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/kernel/CriticalTimeStep.hpp>
 
 #include <gtest/gtest.h>

@@ -2,6 +2,7 @@
 #include <pkg/rbsm/kernel/Pose2.hpp>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace rbsm {
@@ -46,6 +47,16 @@ std::vector<Vec2> edgeNormals(const std::vector<Vec2>& v)
 		out[i]       = Vec2(e.y(), -e.x()).normalized();
 	}
 	return out;
+}
+
+Real centroidInradius(const std::vector<Vec2>& v)
+{
+	Real r = std::numeric_limits<Real>::infinity();
+	for (size_t i = 0; i < v.size(); ++i) {
+		const Vec2 e = v[(i + 1) % v.size()] - v[i];
+		if (e.norm() > 0) r = std::min(r, std::abs(cross2(e, v[i])) / e.norm());
+	}
+	return v.size() < 3 ? 0 : r;
 }
 
 Real polygonSize(const std::vector<Vec2>& v)

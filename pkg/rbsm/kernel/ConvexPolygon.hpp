@@ -28,6 +28,11 @@ std::vector<Vec2> edgeNormals(const std::vector<Vec2>& v);
 /// Size of a polygon: the largest side of its axis-aligned bounding box (m). 0 for empty input.
 Real polygonSize(const std::vector<Vec2>& v);
 
+/// Distance from the centroid (the origin) to the nearest edge line of a convex CCW polygon given
+/// about its centroid [m]: the least distance from the centroid to any supporting line, hence the
+/// least Kawai h a joint of this block can have, and half the thickness of a thin block.
+Real centroidInradius(const std::vector<Vec2>& vertices);
+
 /// Geometric mass properties of a uniform polygon of unit density and unit thickness.
 struct MassProperties {
 	Real area;        ///< m^2 (positive for a counter-clockwise polygon)

@@ -311,16 +311,6 @@ Real stiffestJointOmega2(const DynBody& body, const std::vector<Vec2>& v, Real E
 	return best;
 }
 
-Real centroidInradius(const std::vector<Vec2>& v)
-{
-	Real r = std::numeric_limits<Real>::infinity();
-	for (size_t i = 0; i < v.size(); ++i) {
-		const Vec2 e = v[(i + 1) % v.size()] - v[i];
-		if (e.norm() > 0) r = std::min(r, std::abs(cross2(e, v[i])) / e.norm());
-	}
-	return v.size() < 3 ? 0 : r;
-}
-
 std::pair<Vec2, Vec2> closingContact(const Vec2& ref0, const Vec2& ref1, const Vec2& inc0, const Vec2& inc1, const Vec2& p0, const Vec2& p1)
 {
 	const Real refLen = (ref1 - ref0).norm(), incLen = (inc1 - inc0).norm();

@@ -97,10 +97,6 @@ void contactRowBounds(
 /// blocks'), a block meeting a fixed one its own.
 Real stiffestJointOmega2(const DynBody& body, const std::vector<Vec2>& vertices, Real En, Real Es, Real partnerN, Real partnerS, Real thickness);
 
-/// Distance from the centroid (the origin) to the nearest edge line of a convex CCW polygon given
-/// about its centroid [m]: the least distance from the centroid to any supporting line, hence the
-/// least Kawai h a joint of this block can have.
-Real centroidInradius(const std::vector<Vec2>& vertices);
 
 /// The contact segment a joint can reach within a few steps (world, m). A corner of the incident
 /// block on the reference edge closes by rotation until the incident edge lies flat: a joint
