@@ -196,15 +196,17 @@ class SlopeModel:
         if reset_displacements:
             for b in O.bodies:
                 b.state.refPos = b.state.pos
+        figures = dict(converged=bool(ok), steps=steps, unbalanced=ratio, max_displacement=moved)
+        if ok and moved > 0.1 * size and hold_friction is None:  # (kept: fos() says it of the FS it finds after)
+            figures["failed"] = ("settled, but a block moved %.3g m on the way (%.0f %% of the median block size): the "
+                                 "slope failed at these strengths and came to rest elsewhere" % (moved, 100 * moved / size))
         st = self._record(name, dict(tol=tol, density_scaling=density_scaling, hold_friction=hold_friction, damping=damping),
-                          dict(converged=bool(ok), steps=steps, unbalanced=ratio, max_displacement=moved), w0)
+                          figures, w0)
         if not ok:
             print("SlopeModel.%s: not settled in %d steps (unbalanced-force ratio %.2e > %g): the slope may be failing "
                   "at these strengths" % (name, steps, ratio, tol), flush=True)
-        elif moved > 0.1 * size and hold_friction is None:
-            print("SlopeModel.%s: WARNING: settled, but a block moved %.3g m on the way (%.0f %% of the median block "
-                  "size): the slope failed at these strengths and came to rest elsewhere" % (name, moved, 100 * moved / size),
-                  flush=True)
+        elif "failed" in figures:
+            print("SlopeModel.%s: WARNING: %s" % (name, figures["failed"]), flush=True)
         return st
 
     def give_joint_sets(self, **settle):
@@ -329,6 +331,12 @@ class SlopeModel:
         from .fos import fos
         w0 = time.time()
         r = fos(self.sb, **kw)
+        since = self.stages[max([i for i, s in enumerate(self.stages) if s.name == "build"] or [0]):]
+        failed = [s for s in since if "failed" in s.figures]
+        if failed:  # the mass that came to rest has an FS of its own; the slope as built had one below 1
+            r.warnings.append("the slope failed in the stage %r (%s): this FS is that of the mass where it came to rest, "
+                              "not of the slope as built, whose FS at these strengths is below 1"
+                              % (failed[0].name, failed[0].figures["failed"]))
         rows = [["RBSM " + k if k.startswith(("strength reduction", "contact forces")) else k, e["fs"], e["note"]]
                 for k, e in r.estimates.items()]
         self._record("factor of safety", dict(kw), dict(fs=r.fs, method=r.method, conclusive=r.conclusive,
