@@ -8,7 +8,7 @@ O.bodies.append(polygon2d([(-100, -1), (100, -1), (100, 0), (-100, 0)], rock, fi
 O.bodies.append(polygon2d([(0, 0), (4, 0), (4, 1), (0, 1)], rock))                           # a block on it
 g = 9.81
 O.engines = engines(gravity=(g * sin(radians(35)), -g * cos(radians(35)), 0), contact_damping=0.3)  # the incline
-O.run(1000, True)                     # the time stepper sets O.dt to 0.8 x the critical step
+O.run(1000, True)                     # RbsmTimeStepper sets a stable O.dt (smaller for impacts)
 joint = O.interactions[0, 1].phys
 print(f"normal force {joint.normalForce:.0f} N, shear force {joint.shearForce:.0f} N, "
       f"slipping points {joint.slippingPoints}, block moved {O.bodies[1].state.displ()[0]:.2f} m")

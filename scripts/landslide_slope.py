@@ -112,7 +112,7 @@ if master:
     model.report(os.path.join(args.out, "report.md"))
     model.to_json(os.path.join(args.out, "summary.json"), blocks=True)  # the stages' figures, each block's displacement
     beta = math.atan2(top - y0, crest - toe)
-    print(model.fs_table([("RBSM strength reduction", None, "not run (--strength-reduction)")] * (not args.strength_reduction) + [
+    print(model.fs_table([("RBSM strength reduction", None, "not run (--strength-reduction; serial: not with --mpi)")] * (not args.strength_reduction) + [
         ("closed form: planar wedge tan(phi)/tan(psi)", math.tan(phi) / math.tan(psi), "psi = 35 deg, no crack thrust"),
         ("closed form: infinite slope tan(phi)/tan(beta)", math.tan(phi) / math.tan(beta), "face beta = %.1f deg" % math.degrees(beta)),
         ("seed paper: RBSM", 0.72, "Table 2"), ("seed paper: Fellenius", 0.63, "Table 2")]))

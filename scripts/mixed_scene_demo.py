@@ -1,16 +1,17 @@
 # Mixed scene (issue 17): a granular backfill of YADE spheres retained by a wall of Polygon2D blocks,
 # all on a YADE Wall as the ground, with a second Wall closing the backfill on the left. Headless; writes
-# out/mixed_scene/mixed_start.png and mixed_end.png (another directory with RBSM_OUT=...) and prints the
-# thrust of the spheres on the block wall and how far the wall's top moved.
-#   build/yade-rbsm -n -x scripts/mixed_scene_demo.py
+# out/mixed_scene/mixed_start.png and mixed_end.png (another directory as the first argument, or RBSM_OUT=...)
+# and prints the thrust of the spheres on the block wall and how far the wall's top moved.
+#   build/yade-rbsm -n -x scripts/mixed_scene_demo.py [out_dir]
 import os
 import random
+import sys
 
 from yade import utils
 from yade_rbsm import polygon2d, mixed_engines
 from yade_rbsm.snapshots import block_polygons
 
-out = os.environ.get("RBSM_OUT", os.path.join("out", "mixed_scene"))
+out = sys.argv[1] if len(sys.argv) > 1 else os.environ.get("RBSM_OUT", os.path.join("out", "mixed_scene"))
 os.makedirs(out, exist_ok=True)
 random.seed(1)
 

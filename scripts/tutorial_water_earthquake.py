@@ -1,6 +1,7 @@
 # Water and an earthquake on a rock slope: Hoek & Bray's plane failure (a 60 deg face 12 m high, a bedding
 # dipping 30 deg with c 20 kPa, phi 30 deg, a vertical tension crack), its factor of safety dry, with water
-# in the bedding, and under a pseudo-static acceleration kh g, each against Hoek & Bray's closed form.
+# in the crack and the bedding, under a pseudo-static acceleration kh g, and its yield acceleration, each
+# against Hoek & Bray's closed form.
 #   build/yade-rbsm -n -x scripts/tutorial_water_earthquake.py [out_dir]
 import math, os, sys
 from yade_rbsm import slope
@@ -24,18 +25,19 @@ W = rho * 9.81 * 0.5 * abs(sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(wedge, 
 A = (crack - daylight[0]) / math.cos(psi)   # bedding length [m]
 
 
-def hoek_bray(U=0.0, kh=0.0):               # Hoek & Bray's plane failure, water force U on the plane, no crack water
-    return (c * A + (W * (math.cos(psi) - kh * math.sin(psi)) - U) * math.tan(phi)) / (W * (math.sin(psi) + kh * math.cos(psi)))
+def hoek_bray(U=0.0, V=0.0, kh=0.0):        # Hoek & Bray's plane failure: water forces U on the plane, V in the crack
+    return ((c * A + (W * (math.cos(psi) - kh * math.sin(psi)) - U - V * math.sin(psi)) * math.tan(phi))
+            / (W * (math.sin(psi) + kh * math.cos(psi)) + V * math.cos(psi)))
 
 
 dry = model.fos()
-zw = 2.0                                    # water 2 m up the crack's base, along the bedding to the daylight point
-model.set_water([daylight, (base[0], base[1] + zw)], joints=["bedding"])
+zw = 2.0                                    # water 2 m up the crack and along the bedding to the daylight point
+model.set_water([daylight, (base[0], base[1] + zw)])   # the joints of the sets and traces: bedding and crack
 wet = model.fos()
 model.set_water(None)                       # dry again
 model.set_seismic(0.1, towards=-1)          # kh = 0.1, out of the face (the face looks to -x)
 quake = model.fos()
-for name, r, closed in (("dry", dry, hoek_bray()), ("water, zw 2 m", wet, hoek_bray(U=0.5 * gw * zw * A)),
+for name, r, closed in (("dry", dry, hoek_bray()), ("water, zw 2 m", wet, hoek_bray(U=0.5 * gw * zw * A, V=0.5 * gw * zw ** 2)),
                         ("kh 0.1", quake, hoek_bray(kh=0.1))):
     print(f"{name:14s} FS {r.fs:.3f} by {r.method}, Hoek & Bray {closed:.3f} ({100 * (r.fs / closed - 1):+.1f} %)")
 model.set_seismic(0)                        # static again; the yield acceleration: kh at FS = 1

@@ -34,9 +34,12 @@ def yref(text, ours):
     return re.sub(r":yref:`(([^`<]*)<([^`>]*)>|[^`]*)`", link, text)
 
 
-def clean(doc, ours):
+def clean(doc, ours, lines=False):
+    """A docstring as reST: YADE's roles resolved, |x| escaped; on one line for a table cell unless *lines*
+    (a class's text keeps its paragraphs and bullet lists)."""
     doc = META.sub("", doc or "").strip().replace("|", "\\|")  # |x| is a magnitude, not a reST substitution
-    return yref(doc, ours).replace("\n", " ")
+    doc = yref(doc, ours)
+    return doc if lines else doc.replace("\n", " ")
 
 
 def attributes(cls, ours):
@@ -68,7 +71,7 @@ def section(name, ours):
     cls = getattr(wrapper, name)
     bases = [b.__name__ for b in cls.__mro__[1:] if b.__module__ == "yade.wrapper"]
     lines = [f".. _cls-{name}:", "", name, "~" * len(name), "",
-             f"*{' → '.join(bases)}*" if bases else "", "", clean(cls.__doc__, ours), ""]
+             f"*{' → '.join(bases)}*" if bases else "", "", clean(cls.__doc__, ours, lines=True), ""]
     rows = attributes(cls, ours)
     if rows:
         lines += [".. list-table::", "   :header-rows: 1", "   :widths: 18 10 12 60", "",

@@ -72,10 +72,18 @@ class DynamicOutputs:
             # each term's change over the stage (elastPotential is a state, the others sums since trackEnergy):
             # they add up to the total's change, the error
             change = {k: v - self.balance0.get(k, 0.0) for k, v in O.energy.items()}
-            work = -change.get("gravWork", 0.0)
-            error = 100 * sum(change.values()) / work if work else float("nan")
-            print("  energy balance of the dynamic stage (changes of O.energy's terms, J/m): %s; off by %.3g %% of the "
-                  "work of gravity" % (", ".join("%s %.4g" % kv for kv in sorted(change.items())), error), flush=True)
+            work, off = -change.get("gravWork", 0.0), sum(change.values())
+            terms = ", ".join("%s %.4g" % kv for kv in sorted(change.items()))
+            stored = abs(self.balance0.get("elastPotential", 0.0))
+            if abs(work) >= 0.1 * max(stored, max(map(abs, change.values()), default=0.0)):
+                error = 100 * off / work
+                print("  energy balance of the dynamic stage (changes of O.energy's terms, J/m): %s; off by %.3g %% of the "
+                      "work of gravity" % (terms, error), flush=True)
+            else:  # a stage where little moves: a percentage of its tiny work of gravity would read as an error
+                error = 100 * off / max(stored, abs(work), 1e-300)
+                print("  energy balance of the dynamic stage (changes of O.energy's terms, J/m): %s; off by %.3g J, %.3g %% "
+                      "of the elastic energy stored at its start (the work of gravity, %.3g J, is too small to judge it by)"
+                      % (terms, off, error, work), flush=True)
             figures["energy_error_percent"] = error
         if self.recorder is not None:
             O.engines = [e for e in O.engines if getattr(e, "label", "") != "vtkRecorder"]  # (O.engines: new wrappers)

@@ -41,8 +41,10 @@ __all__ = ["JointStrength", "JointSet", "Trace", "SetCut", "jointset_blocks", "j
 class JointStrength:
     """The strength and stiffness a joint set or a trace gives its joints (keywords only): *cohesion* [Pa],
     *friction_angle* [deg] (None: the rock's, ``RbsmMat.frictionAngle``), *tensile_strength* [Pa], *kn*,
-    *ks* [Pa/m] (None: the blocks' Kawai springs), *ductile* (None: the blocks'), and *name* for the
-    reports. A joint is a discontinuity: by default no cohesion and no tensile strength."""
+    *ks* [Pa/m] (None: the blocks' Kawai springs), *ductile* (None: the blocks', ``RbsmMat.ductile``, False by
+    default: brittle, a point loses its cohesion when it first slips, Kawai's joint; True keeps it while it slips,
+    the perfectly plastic joint of limit equilibrium), and *name* for the reports. A joint is a discontinuity: by
+    default no cohesion and no tensile strength."""
     cohesion: float = 0.0
     friction_angle: Optional[float] = None
     tensile_strength: float = 0.0
