@@ -87,7 +87,10 @@ namespace {
 	// Overlaps deeper than this fraction of the smaller block are outside what the small-strain
 	// joint springs represent: reported (a few times per run), like UDEC's "contact overlap too great".
 	constexpr Real   deepOverlap = 0.05;
-	std::atomic<int> deepOverlapReports { 0 }, passThroughReports { 0 };
+	// A wet joint is followed while it opens by this fraction of the smaller block's size: an opening crack keeps
+	// its water through the onset of sliding (strength reduction's runaway criterion is 5 % of a block).
+	constexpr Real   wetReach = 0.1;
+	std::atomic<int> deepOverlapReports { 0 }, passThroughReports { 0 }, pinchReports { 0 };
 	// After the first five reports an overlap is reported again when it is twice the deepest reported so
 	// far (as a fraction of the smaller block): overlaps that keep growing do not go unnoticed.
 	std::atomic<double> deepestReported { 0 };
@@ -121,14 +124,23 @@ namespace {
 	}
 }
 
-// One block passing through the other (a thin wall hit, a sliver pinched): the run stops after this step.
-void Ig2_Polygon2D_Polygon2D_RbsmGeom::passThrough(const Interaction& I, Real depth, Real halfThickness) const
+// One block passing through the other: an impact (a thin wall hit) stops the run after this step, a pinched
+// block is reported (a few times per run).
+void Ig2_Polygon2D_Polygon2D_RbsmGeom::passThrough(const Interaction& I, Real depth, Real halfWidth, bool impact) const
 {
 	std::ostringstream problem;
-	problem << "overlap by " << depth << " m, deeper than the thinner block's half-thickness " << halfThickness
-	        << " m (Polygon2D.inradius): one is passing through the other (make the joints stiffer, RbsmMat.young or jointKn, "
-	           "the thin block thicker, or the impact slower)";
-	rbsm_report::stopForPair(passThroughReports, *scene, "Ig2_Polygon2D_Polygon2D_RbsmGeom", I.getId1(), I.getId2(), problem.str().c_str());
+	problem << "overlap by " << depth << " m, deeper than the thinner block's half-width along the contact normal " << halfWidth
+	        << " m: " << (impact ? "one is passing through the other" : "the thinner one is pinched through")
+	        << " (make the joints stiffer, RbsmMat.young or jointKn, the thin block thicker, or the impact slower)";
+	if (impact) {
+		rbsm_report::stopForPair(passThroughReports, *scene, "Ig2_Polygon2D_Polygon2D_RbsmGeom", I.getId1(), I.getId2(), problem.str().c_str());
+		return;
+	}
+	rbsm_report::limited(pinchReports, [&](bool last) {
+		return "yade-rbsm: WARNING: Ig2_Polygon2D_Polygon2D_RbsmGeom: bodies #" + std::to_string(I.getId1()) + " and #"
+		        + std::to_string(I.getId2()) + " " + problem.str() + " at step " + std::to_string(scene->iter)
+		        + (last ? "; further such warnings are not shown" : "");
+	});
 }
 
 // The contact is computed in block 1's frame: its vertices and normals are used as stored, only
@@ -157,8 +169,8 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 
 // New contacts need touch or closeness. An existing joint is followed while it opens as far
 // as its intact springs can hold tension (σt/kn, doubled as margin) so that the law, not the
-// geometry, breaks it; a wet joint as far as the smaller block's size, since the water stays in an
-// opening crack (Hoek & Bray's V). The same distance trims the facing edge to the part that touches.
+// geometry, breaks it; a wet joint a tenth of the smaller block's size (wetReach), so that an opening crack keeps
+// its water (Hoek & Bray's V). The same distance trims the facing edge to the part that touches.
 [[gnu::always_inline]] inline Real Ig2_Polygon2D_Polygon2D_RbsmGeom::reach(const Interaction& I, bool existing, Real minSize) const
 {
 	Real maxSeparation = interactionDistance;
@@ -167,7 +179,7 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 		const IPhys* ip = I.phys.get();
 		const auto*  ph = (ip && ip->getClassIndex() == RbsmPhys::getClassIndexStatic()) ? static_cast<const RbsmPhys*>(ip) : nullptr;
 		if (ph && ph->kn > 0 && ph->tensileStrength > 0 && ph->nIntact() > 0) maxSeparation += 2 * ph->tensileStrength / ph->kn;
-		if (ph && ph->waterForce > 0) maxSeparation = std::max(maxSeparation, minSize);
+		if (ph && ph->waterForce > 0) maxSeparation = std::max(maxSeparation, wetReach * minSize);
 	}
 	return maxSeparation;
 }
@@ -298,9 +310,14 @@ bool Ig2_Polygon2D_Polygon2D_RbsmGeom::go(
 	g->update(c, pose1, state1, state2);
 	if (g->strainSides) g->addStrainMotion(state1, state2);
 	const Real depth = std::max(c.d0, c.d1);
-	// Deeper than the thinner block's half-thickness, the edges cross its centre line and the contact's normal
-	// flips: the springs would push one block through the other. No impact or pinching the springs represent.
-	if (depth > std::min(A.inradius, B.inradius) && A.inradius > 0 && B.inradius > 0) passThrough(*I, depth, std::min(A.inradius, B.inradius));
+	// Deeper than the thinner block's half-width along the contact normal, the blocks have passed its middle:
+	// the axis search then prefers the other side and the springs push one block through the other. (Never
+	// below the inradius, the least half-width: a cheap filter.) An impact that closes a tenth of that
+	// half-width per step is a block going through (stopped); a slow squeeze is a pinched block (reported).
+	if (depth > std::min(A.inradius, B.inradius)) {
+		const Real w = std::min(rbsm::halfWidthAlong(A.vertices, c.normal), rbsm::halfWidthAlong(B.vertices, pair.rel.unrotate(c.normal)));
+		if (depth > w) passThrough(*I, depth, w, -g->relativeVelocity.dot(g->normal) * scene->dt > 0.1 * w);
+	}
 	if (depth > deepOverlap * pair.minSize) {
 		// The input is to blame if the contact is made at the first step of the younger block.
 		const auto& bodies  = scene->bodies->body;

@@ -46,7 +46,7 @@ private:
 	enum class Outcome { Touching, Apart, Lost };
 	static void forgetOldShapes(Interaction& I, const Polygon2D& A, const Polygon2D& B);
 	Real        reach(const Interaction& I, bool existing, Real minSize) const;
-	void        passThrough(const Interaction& I, Real depth, Real halfThickness) const;
+	void        passThrough(const Interaction& I, Real depth, Real halfWidth, bool impact) const;
 	bool        followFrozen(const Pair& pair, const Interaction& I, const RbsmGeom& g, rbsm::EdgeContact& c) const;
 	Outcome     exactContact(const Pair& pair, const State& state1, const State& state2, const shared_ptr<Interaction>& I, RbsmGeom*& g, rbsm::EdgeContact& c);
 	RbsmGeom*   newGeom(const Pair& pair, const State& state1, const State& state2, Interaction& I, const rbsm::SearchMemory& memory);

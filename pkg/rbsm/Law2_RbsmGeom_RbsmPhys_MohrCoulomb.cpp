@@ -266,8 +266,9 @@ namespace {
 	}
 
 	// Water in the joint: the pore pressure u_k = γw (h(x_k) − y_k) ≥ 0 at each point pushes the blocks
-	// apart (force u_k a_k along the normal on body 2, as a compression would); returns Σ u_k a_k.
-	template <bool Strain> Real addWater(const RbsmGeom& g, const JointStep& j, const std::vector<Vector2r>& line, Real gammaW, int n, JointSums& sum)
+	// apart (force u_k a_k along the normal on body 2, as a compression would); returns Σ u_k a_k. With
+	// O.trackEnergy, work gets the water's work on the blocks, Σ u_k a_k (v_k·n) dt (an opening joint: > 0).
+	template <bool Strain> Real addWater(const RbsmGeom& g, const JointStep& j, const std::vector<Vector2r>& line, Real gammaW, int n, JointSums& sum, Real& work)
 	{
 		Real total = 0;
 		for (int k = 0; k < n; k++) {
@@ -278,6 +279,7 @@ namespace {
 			const Real pushed = u * g.rule->w[k] * j.area;
 			addForceAt<Strain>(j, s, pushed * g.normal, sum);
 			total += pushed;
+			if (j.trackEnergy) work += pushed * j.kin.velocity(s).dot(g.normal) * j.dt;
 		}
 		return total;
 	}
@@ -373,7 +375,8 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 	else
 		for (int k = 0; k < n; k++)
 			addPoint<Strain>(g, p, j, k, sum);
-	if (!phreatic.empty() && (p.water || waterAll)) p.waterForce = addWater<Strain>(g, j, phreatic, waterUnitWeight, n, sum);
+	Real waterWork = 0;
+	if (!phreatic.empty() && (p.water || waterAll)) p.waterForce = addWater<Strain>(g, j, phreatic, waterUnitWeight, n, sum, waterWork);
 	else if (p.waterForce != 0) p.waterForce = 0; // the water was taken away
 	const Real torque2 = sum.momentP0 + cross(g.p0 - g.centroid2, sum.force);
 	const Real torque1 = -(sum.momentP0 + cross(g.p0 - g.centroid1, sum.force));
@@ -403,6 +406,7 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 		if (dissipated != 0) scene->energy->add(dissipated, "plastDissip", plastDissipIx, /*cumulative*/ false);
 		if (viscous != 0) scene->energy->add(viscous, "viscDamp", viscDampIx, /*cumulative*/ false);
 		if (released != 0) scene->energy->add(released, "jointRelease", jointReleaseIx, /*cumulative*/ false);
+		if (waterWork != 0) scene->energy->add(-waterWork, "waterWork", waterWorkIx, /*cumulative*/ false);
 	}
 	return true;
 }

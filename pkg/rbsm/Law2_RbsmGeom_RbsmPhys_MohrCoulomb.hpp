@@ -41,13 +41,14 @@ public:
 		"Water (UDEC's hydrostatic joint pressure): with a :yref:`phreatic<Law2_RbsmGeom_RbsmPhys_MohrCoulomb.phreatic>` surface, each "
 		"point of a joint that takes water (:yref:`RbsmPhys.water`, or every joint with :yref:`waterAll<Law2_RbsmGeom_RbsmPhys_MohrCoulomb.waterAll>`) "
 		"below it has the pore pressure u = γw·(h(x) − y), which pushes the two blocks apart with u·a_k; the springs carry the "
-		"effective stress, so the strength is c + σn′ tanφ with σn′ = σn − u. The water stays as given (no flow); its work is not in O.energy.",
+		"effective stress, so the strength is c + σn′ tanφ with σn′ = σn − u. The water stays as given (no flow); its work on the blocks is O.energy's waterWork.",
 		((std::vector<Vector2r>, phreatic, , Attr::triggerPostLoad, "The phreatic surface (water table) [m], a polyline of strictly increasing x in the blocks' plane, continued level beyond its ends; empty (default): no water, no cost."))
 		((Real, waterUnitWeight, 9810, Attr::triggerPostLoad, "Unit weight of the water γw [N/m³]."))
 		((bool, waterAll, false, , "Every joint takes water (UDEC: every contact), not only those with RbsmPhys.water."))
 		((Real, dampingRatio, 0, Attr::triggerPostLoad, "Viscous contact damping as a fraction of critical damping of the joint (normal and shear), ξ; 0 disables it (no cost). The shear dashpot acts while the joint sticks, and spring and dashpot together stay within the Mohr-Coulomb strength of the springs' normal force: the dashpot damps, it adds no friction."))
 		((int, plastDissipIx, -1, (Attr::hidden | Attr::noSave), "Index of plastDissip in O.energy."))
 		((int, elastPotentialIx, -1, (Attr::hidden | Attr::noSave), "Index of elastPotential in O.energy."))
+		((int, waterWorkIx, -1, (Attr::hidden | Attr::noSave), "Index of waterWork in O.energy."))
 		((int, viscDampIx, -1, (Attr::hidden | Attr::noSave), "Index of viscDamp in O.energy."))
 		((int, jointReleaseIx, -1, (Attr::hidden | Attr::noSave), "Index of jointRelease in O.energy.")),
 		/*ctor*/,

@@ -32,7 +32,7 @@ public:
 			"Polar second moment of area about the centroid, J = ∫(x²+y²)dA [m⁴] (derived); "
 			"the polar inertia of a block is density·thickness·J [kg·m²]."))
 		((Real, circumradius, 0, (Attr::readonly | Attr::noSave), "Largest distance of a vertex from the centroid [m] (derived)."))
-		((Real, inradius, 0, (Attr::readonly | Attr::noSave), "Distance from the centroid to the nearest edge line [m] (derived): half the thickness of a thin block. A contact deeper than the thinner block's inradius stops the run (the block would pass through)."))
+		((Real, inradius, 0, (Attr::readonly | Attr::noSave), "Distance from the centroid to the nearest edge line [m] (derived): half the thickness of a thin block, the least half-width (a contact deeper than the thinner block's half-width along its normal stops the run: one block would pass through the other)."))
 		((std::vector<Vector2r>, edgeNormals, , (Attr::readonly | Attr::noSave),
 			"Outward unit normals of the edges (edge i from vertex i to i+1) in the body's local frame (derived); the contact "
 			"geometry rotates them with the block instead of normalising every edge at every step."))

@@ -59,6 +59,18 @@ Real centroidInradius(const std::vector<Vec2>& v)
 	return v.size() < 3 ? 0 : r;
 }
 
+Real halfWidthAlong(const std::vector<Vec2>& v, const Vec2& n)
+{
+	if (v.empty()) return 0;
+	Real lo = std::numeric_limits<Real>::infinity(), hi = -lo;
+	for (const Vec2& x : v) {
+		const Real d = x.dot(n);
+		lo           = std::min(lo, d);
+		hi           = std::max(hi, d);
+	}
+	return 0.5 * (hi - lo);
+}
+
 Real polygonSize(const std::vector<Vec2>& v)
 {
 	if (v.empty()) return 0;

@@ -33,6 +33,10 @@ Real polygonSize(const std::vector<Vec2>& v);
 /// least Kawai h a joint of this block can have, and half the thickness of a thin block.
 Real centroidInradius(const std::vector<Vec2>& vertices);
 
+/// Half the width of a polygon along the unit direction n: (max v·n − min v·n) / 2 [m]. Two blocks overlapping
+/// by more than the thinner one's half-width along their contact normal have passed its middle.
+Real halfWidthAlong(const std::vector<Vec2>& vertices, const Vec2& n);
+
 /// Geometric mass properties of a uniform polygon of unit density and unit thickness.
 struct MassProperties {
 	Real area;        ///< m^2 (positive for a counter-clockwise polygon)
