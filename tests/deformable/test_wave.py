@@ -38,5 +38,7 @@ def test_impact_lasts_two_transit_times():
     duration, expected = d["end"] - d["start"], 2 * d["L"] / C_BAR
     print("impact of a 100 m bar at 1 cm/s: contact %.6g s, 2L/c = %.6g s (%+.2f %%), rebound %.4g m/s"
           % (duration, expected, 100 * (duration / expected - 1), d["rebound"]))
+    record("Waves and elasticity", "a 100-block deformable bar hitting a wall: contact duration", duration, expected,
+           "2 L / c", rtol=0.01, unit="s")
     assert duration == pytest.approx(expected, rel=0.01)
     assert d["rebound"] == pytest.approx(0.01, rel=0.05)

@@ -12,6 +12,7 @@ import os
 import pytest
 
 from conftest import HERE, run_yade
+from verification import record
 
 
 def _run(case):
@@ -22,6 +23,8 @@ def _run(case):
 
 def test_fos_of_a_plane_failure_is_the_closed_form():
     r, out = _run("plane")
+    record("Rock slopes", "Hoek & Bray's plane failure with a tension crack: fos() with its defaults", r["fs"], r["closed"],
+           "Hoek & Bray, plane failure", rtol=0.01)
     assert r["warnings"] == [] and r["kind"] == "jointed rock" and r["method"] == "strength reduction", r
     assert r["fs"] == pytest.approx(r["closed"], rel=0.01), r
     assert set(r["estimates"]) == {"strength reduction", "contact forces, surface of slipping joints"}, r
@@ -43,6 +46,8 @@ def test_fos_of_griffiths_and_lane_is_the_critical_circle():
     on 12edc9b fos() searched 9 x 9 x 9 centres and radii, refined once, and gave 1.413 (+2.3 %, unconservative).
     Strength reduction's warnings qualify its estimate (a note), not the design value: conclusive."""
     r, out = _run("gl")
+    record("Soil slopes", "Griffiths & Lane's 2:1 slope in Voronoi blocks: fos() (Bishop's critical circle)", r["fs"],
+           r["closed"], "the reference critical-circle search", rtol=0.005)
     assert r["method"].startswith("Bishop") and r["fs"] == pytest.approx(r["closed"], rel=0.005), r
     assert r["warnings"] == [], r
 

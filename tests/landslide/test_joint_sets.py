@@ -124,6 +124,8 @@ def test_a_step_path_over_two_joint_sets_gives_the_rigid_block_limit_equilibrium
     assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
     r = json.loads([l for l in p.stdout.splitlines() if l.startswith("RESULT ")][0][7:])
     assert r["paths"] == 9 and r["le"] == pytest.approx(1.6114, abs=1e-4), r
+    record("Rock slopes", "a step path over two joint sets: strength reduction", r["fs"], r["le"],
+           "rigid-block limit equilibrium, least of 9 step paths", rtol=0.01)
     assert r["fs"] == pytest.approx(r["le"], rel=0.01), r
     assert r["mechanism"] in ("", "sliding"), r  # its failed end creeps (mm): too little to name
 
@@ -139,6 +141,8 @@ def test_a_joint_set_with_its_own_springs_settles_by_rho_g_h_over_kn(kn):
     every joint of the set has the set's springs; a stiffer set shortens the step."""
     r = layer(kn)
     assert r["n_set"] == 40 and r["kn"] == [float(kn)] and r["ks"] == [float(kn) / 2], r
+    record("Blocks and joints", "a 1 m layer on a joint set of kn %s Pa/m: settlement" % kn, r["overlap"], r["closed"],
+           "ρ g h / kn", rtol=0.01, unit="m")
     assert r["overlap"] == pytest.approx(r["closed"], rel=0.01), r
     rock = layer("kawai")  # the rock's springs: 1.2e9 Pa/m, 21 um
     assert rock["overlap"] == pytest.approx(rho_g_h / 1.2e9, rel=0.02), rock

@@ -8,6 +8,7 @@ import os
 import pytest
 
 from conftest import HERE, run_yade
+from verification import record
 
 
 @pytest.mark.parametrize("psi", [20.0, 25.0])
@@ -20,6 +21,7 @@ def test_block_on_plane(psi):
     ntrials, moved, tanphi = int(f[6]), float(f[7]), float(f[8])
     assert ok == "True"
     assert fs0 == pytest.approx(math.tan(math.radians(30)) / math.tan(math.radians(psi)), rel=1e-8)
+    record("Rock slopes", "a block on a %g° plane, φ 30°: strength reduction" % psi, fs, fs0, "tan φ / tan ψ", rtol=0.02)
     assert fs == pytest.approx(fs0, rel=0.02), p.stdout[-3000:]
     assert lo <= fs0 * 1.002 and hi >= fs0 * 0.998, (lo, hi, fs0)  # bracket (+ the criterion's resolution)
     assert hi > lo and (hi - lo) <= 0.0051 * lo

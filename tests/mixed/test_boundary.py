@@ -14,6 +14,7 @@ import functools
 from math import radians, sin, cos, tan
 
 import pytest
+from verification import record
 
 from conftest import run_scene
 
@@ -38,6 +39,8 @@ def test_slides_like_a_block_on_a_block(ground, mat, psi):
     a = a_closed_form(psi)
     print(ground, mat, psi, "a", r["a"], "block on block", ref["a"], "closed form", a)
     assert r["geom"] == "RbsmGeom" and r["phys"] == "RbsmPhys" and abs(r["length"] - 4) < 1e-6, r
+    record("Blocks with YADE's bodies", "a block sliding on a %s (%s), ψ %g°: acceleration" % (ground, mat, psi), r["a"], a,
+           "g (sin ψ − cos ψ tan φ)", rtol=0.01, unit="m/s²")
     assert abs(r["a"] - a) < 0.01 * a
     assert abs(r["a"] - ref["a"]) < 1e-3 * a
     bal = r["balance"]

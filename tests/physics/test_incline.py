@@ -92,6 +92,8 @@ def test_cohesive_joint_breaks_at_closed_form_tilt_and_slides():
     r = run_scene("incline", {"mode": "ramp", "psi": psi, "c": C, "L": L, "H": H, "ramp": 50000, "hold": 20000})
     print("ramp to %.3f: first break at %s deg; point-wise closed form %.4f, whole-joint %.4f" % (psi, r["broke_deg"], point, whole), r)
     assert r["broke_deg"] is not None
+    record("Blocks and joints", "a cohesive joint on a slowly tilted incline: tilt at the first break", r["broke_deg"], point,
+           "point-wise Mohr–Coulomb limit", rtol=0.005, unit="°")
     assert r["broke_deg"] == pytest.approx(point, rel=0.005)
     assert r["broke_deg"] <= whole
     assert not r["nIntact"]

@@ -11,6 +11,7 @@ import math
 import pytest
 
 from conftest import run_scene
+from verification import record
 
 
 def test_joint_takes_the_given_stiffness():
@@ -24,6 +25,8 @@ def test_joint_takes_the_given_stiffness():
 def test_block_settles_by_the_closed_form():
     r = run_scene("joint_stiffness", {"mode": "settle", "kn": 2e9, "thickness": 0.5})
     assert r["kn"] == 2e9 and r["length"] == pytest.approx(2.0, rel=1e-9)
+    record("Blocks and joints", "a block resting on a joint of given kn: overlap", r["overlap"], r["weight"] / (2e9 * 2.0 * 0.5),
+           "W / (kn L t)", rtol=5e-3, unit="m")
     assert r["overlap"] == pytest.approx(r["weight"] / (2e9 * 2.0 * 0.5), rel=5e-3)
 
 

@@ -19,6 +19,7 @@ from math import radians, sin, cos, tan, sqrt
 import pytest
 
 from conftest import run_scene
+from verification import record
 
 G, PSI, PHI, SLIDE = 9.81, radians(30), radians(20), 10.0
 V = sqrt(2 * G * SLIDE * (sin(PSI) - tan(PHI) * cos(PSI)))
@@ -40,6 +41,8 @@ def test_runout_between_point_mass_answers(L):
     for xi, x in touching.items():
         print("L %g xi %g, placed touching: speed near the kink %.6f m/s (%+.4f %%)" % (L, xi, x["v_kink"], 100 * (x["v_kink"] / x["v_closed"] - 1)))
         assert x["v_kink"] == pytest.approx(x["v_closed"], rel=0.005), "touching, xi %g" % xi
+    record("Blocks and joints", "a %g m block sliding down an incline: speed at the kink" % L, r[0.3]["v_kink"],
+           r[0.3]["v_closed"], "the point mass's energy balance", rtol=0.005, unit="m/s")
     for xi, x in r.items():
         assert x["v_kink"] == pytest.approx(x["v_closed"], rel=0.005), "xi %g" % xi
         assert abs(x["drift"]) < 0.01 * x["grav_work"], "xi %g" % xi

@@ -9,6 +9,7 @@ import math
 import pytest
 
 from conftest import load_limit_equilibrium
+from verification import record
 
 le = load_limit_equilibrium()
 from yade_rbsm import calibration, slope  # noqa: E402  (pure Python parts)
@@ -27,6 +28,8 @@ def _search(s, **kw):
 def test_firm_base_at_toe_level_bishop_matches_the_charts():
     free = _search(_gl())
     based = _search(_gl(), base=0.0)
+    record("Limit equilibrium", "Griffiths & Lane's 2:1 slope on a firm base: Bishop's critical circle", based.fs, 1.380,
+           "slope stability charts (firm base at the toe)", rtol=0.005)
     assert based.fs == pytest.approx(1.380, rel=0.005), str(based)
     c = based.circle
     assert c.yc - c.R >= -1e-9 or not (based.best.slices.x_entry <= c.xc <= based.best.slices.x_exit)

@@ -15,11 +15,14 @@ import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "py"))
 from yade_rbsm.toppling import Column, goodman_bray, goodman_bray_fs  # noqa: E402
+from verification import record  # noqa: E402
 
 
 def test_one_low_block_slides_at_the_closed_form():
     psi, phi = math.radians(25), math.radians(35)
     fs = goodman_bray_fs([Column(0.0, 1.0, 4.0)], psi, phi)
+    record("Limit equilibrium", "Goodman & Bray: one low block on a 25° base, φ 35°", fs, math.tan(phi) / math.tan(psi),
+           "tan φ / tan ψ", rtol=1e-5)
     assert fs == pytest.approx(math.tan(phi) / math.tan(psi), rel=1e-5)
     r = goodman_bray([Column(0.0, 1.0, 4.0)], psi, math.radians(20))
     assert r.modes == ["sliding"] and r.P0 == pytest.approx(4.0 * (math.sin(psi) - math.tan(math.radians(20)) * math.cos(psi))
