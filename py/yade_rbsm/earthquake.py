@@ -169,6 +169,48 @@ def active_record():
     return Record(d["record"]["t"], d["record"]["a"], name=d["record"]["name"]), d["direction"], d["start"]
 
 
+def yield_coefficient(fs_of, kh_start=0.1, kh_max=1.0, rtol=0.01, trials=None):
+    """k_y, the kh at which fs_of(kh) = 1, by regula falsi kept off the ends (bisection past a trial that slid:
+    fs_of returns 0 there, no FS to interpolate), refined by extending the two measured trials nearest it
+    (FS(kh) is smooth below k_y). 0 if fs_of(0) <= 1; ValueError if FS > 1 at kh_max. *trials* (a list) gets
+    each [kh, FS]."""
+    trials = [] if trials is None else trials
+
+    def excess(k):
+        fs = fs_of(k)
+        trials.append([k, fs])
+        return fs - 1.0
+
+    lo, f_lo = 0.0, excess(0.0)
+    if f_lo <= 0:
+        return 0.0
+    kh = kh_start
+    f_hi = excess(kh)
+    while f_hi > 0 and kh < kh_max:
+        lo, f_lo, kh = kh, f_hi, min(2 * kh, kh_max)
+        f_hi = excess(kh)
+    if f_hi > 0:
+        raise ValueError("yield acceleration: FS is %.3f at kh_max = %g: no yield below it" % (f_hi + 1, kh_max))
+    hi = kh
+    while hi - lo > rtol * hi:
+        if f_hi == -1.0:  # hi slid away: halve
+            k = 0.5 * (lo + hi)
+        else:
+            k = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
+            k = min(max(k, lo + 0.1 * (hi - lo)), hi - 0.1 * (hi - lo))
+        f = excess(k)
+        if f > 0:
+            lo, f_lo = k, f
+        else:
+            hi, f_hi = k, f
+    measured = sorted(t for t in trials if t[1] > 1.0)
+    if len(measured) >= 2:
+        (k1, fs1), (k2, fs2) = measured[-2:]
+        if fs2 < fs1:
+            return min(max(k2 + (1.0 - fs2) * (k2 - k1) / (fs2 - fs1), lo), hi)
+    return 0.5 * (lo + hi)
+
+
 class NewmarkResult:
     """Newmark's sliding block: *displacement* [m] at the end, *time*, *velocity*, *sliding* histories."""
 

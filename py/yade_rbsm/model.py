@@ -256,6 +256,7 @@ class SlopeModel:
         failing. Returns k_y (0 if the slope fails statically); recorded with the trials."""
         from yade import O
         from . import slope as sl
+        from .earthquake import yield_coefficient
         from .fos import _scale, fos
         rtol = number("SlopeModel.yield_acceleration", "rtol", rtol, 0, 0.5, low_open=True)
         kh_max = number("SlopeModel.yield_acceleration", "kh_max", kh_max, 0, 1, low_open=True)
@@ -264,11 +265,10 @@ class SlopeModel:
         settle_kw = dict(dict(tol=1e-4, max_steps=60000, check=200), **(settle or {}))
         w0, mark, trials = time.time(), "rbsm_yield_acceleration", []
         O.saveTmp(mark)
-
         ids = [b.id for b in _blocks(O)]
         d_fail = fos_kw.get("d_fail") or 0.05 * _scale(ids)[0]  # fos()'s runaway displacement
 
-        def excess(k):  # FS(k) - 1, from the state the method was called in
+        def fs_under(k):  # FS under kh = k, from the state the method was called in (0: it slid)
             O.loadTmp(mark)
             before = {i: O.bodies[i].state.pos for i in ids}
             sl.set_seismic(k, towards=towards)
@@ -280,40 +280,10 @@ class SlopeModel:
                     fs = fos(self.sb, **fos_kw).fs
                 except ValueError:  # out of equilibrium under kh: it fails there
                     pass
-            trials.append([k, fs])
-            return fs - 1.0
+            return fs
 
         try:
-            lo, f_lo = 0.0, excess(0.0)
-            if f_lo <= 0:
-                k_y = 0.0
-            else:
-                f_hi = excess(kh)
-                while f_hi > 0 and kh < kh_max:
-                    lo, f_lo, kh = kh, f_hi, min(2 * kh, kh_max)
-                    f_hi = excess(kh)
-                if f_hi > 0:
-                    raise ValueError("SlopeModel.yield_acceleration: FS is %.3f at kh_max = %g: no yield below it"
-                                     % (f_hi + 1, kh_max))
-                hi = kh
-                while hi - lo > rtol * hi:
-                    if f_hi == -1.0:  # hi slid away: no FS to interpolate, halve
-                        k = 0.5 * (lo + hi)
-                    else:  # regula falsi, kept off the ends
-                        k = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
-                        k = min(max(k, lo + 0.1 * (hi - lo)), hi - 0.1 * (hi - lo))
-                    f = excess(k)
-                    if f > 0:
-                        lo, f_lo = k, f
-                    else:
-                        hi, f_hi = k, f
-                # FS(kh) is smooth below k_y: the two measured trials nearest it, extended to FS = 1
-                measured = sorted(t for t in trials if t[1] > 1.0)
-                k_y = 0.5 * (lo + hi)
-                if len(measured) >= 2:
-                    (k1, fs1), (k2, fs2) = measured[-2:]
-                    if fs2 < fs1:
-                        k_y = min(max(k2 + (1.0 - fs2) * (k2 - k1) / (fs2 - fs1), lo), hi)
+            k_y = yield_coefficient(fs_under, kh_start=kh, kh_max=kh_max, rtol=rtol, trials=trials)
         finally:
             O.loadTmp(mark)
         self._record("yield acceleration", dict(towards=towards, rtol=rtol), dict(ky=k_y, trials=len(trials)), w0,

@@ -71,3 +71,24 @@ def test_bad_records_are_refused_naming_the_problem(t, a, units, match):
 def test_newmark_needs_its_yield():
     with pytest.raises(ValueError, match="give ky, or psi and phi"):
         eq.newmark(pulse(1, 1))
+
+
+def _wedge_fs(kh, psi=30.0, phi=40.0):
+    p, f = math.radians(psi), math.radians(phi)
+    return (math.cos(p) - kh * math.sin(p)) * math.tan(f) / (math.sin(p) + kh * math.cos(p))
+
+
+def test_yield_coefficient_of_a_wedge_is_tan_phi_minus_psi():
+    """The root finder SlopeModel.yield_acceleration uses, on the wedge's closed form FS(kh): tan(phi - psi) to 1e-6
+    from the two measured trials nearest it; the same when every trial past k_y slides (FS 0: no FS there)."""
+    trials = []
+    assert eq.yield_coefficient(_wedge_fs, trials=trials) == pytest.approx(math.tan(math.radians(10)), rel=1e-3)
+    assert 3 <= len(trials) <= 12
+    slid = eq.yield_coefficient(lambda k: _wedge_fs(k) if _wedge_fs(k) >= 1 else 0.0)
+    assert slid == pytest.approx(math.tan(math.radians(10)), rel=0.01)
+
+
+def test_yield_coefficient_ends():
+    assert eq.yield_coefficient(lambda k: 0.9) == 0.0  # fails statically
+    with pytest.raises(ValueError, match="no yield below it"):
+        eq.yield_coefficient(lambda k: 2.0, kh_max=0.5)
