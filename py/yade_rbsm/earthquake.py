@@ -121,21 +121,21 @@ def apply(record, direction=1, start=None):
     gives the static gravity back. Returns the engine."""
     from yade import O, wrapper
     from . import omega, slope_scene
-    for e in [e for e in O.engines if getattr(e, "label", "") == LABEL]:
-        O.engines = [x for x in O.engines if getattr(x, "label", "") != LABEL]
-    g0 = slope_scene.static_gravity()
-    if record is None:
-        omega.newton(O).gravity = tuple(g0)
-        if TAG in O.tags.keys():
-            del O.tags[TAG]
-        return None
-    if not isinstance(record, Record):
+    if record is not None and not isinstance(record, Record):
         raise ValueError("earthquake: give a yade_rbsm.earthquake.Record (Record.sine, Record.from_csv, Record(t, a)); "
                          "got %r" % (record,))
     if direction not in (1, -1):
         raise ValueError("earthquake: direction must be +1 or -1 (the record's positive acceleration along the model's "
                          "+x or -x), got %r" % (direction,))
     start = O.time if start is None else number("earthquake", "start", start)
+    # (checked first: a refused record leaves the one shaking the scene in place)
+    O.engines = [e for e in O.engines if getattr(e, "label", "") != LABEL]
+    g0 = slope_scene.static_gravity()
+    if record is None:
+        omega.newton(O).gravity = tuple(g0)
+        if TAG in O.tags.keys():
+            O.tags[TAG] = ""  # (YADE's tags cannot be deleted: empty is none)
+        return None
     O.tags[TAG] = json.dumps(dict(record=json.loads(record.to_json()), direction=direction, start=start, g0=list(g0)))
     engine = wrapper.PyRunner(command="import yade_rbsm.earthquake as _eq; _eq.step()", iterPeriod=1, label=LABEL)
     O.engines = omega.before_newton(list(O.engines), engine)
@@ -147,8 +147,8 @@ def step():
     """The engine's command: gravity = static gravity − direction · a_g(t) x̂ at the middle of the coming step."""
     from yade import O
     from . import omega
-    text = O.tags[TAG] if TAG in O.tags.keys() else None
-    if text is None:
+    text = shaking(O)
+    if not text:
         return
     if text not in _active:
         _active.clear()
@@ -160,10 +160,15 @@ def step():
     omega.newton(O).gravity = (g0[0] - direction * a, g0[1], g0[2])
 
 
+def shaking(O):
+    """The scene's record as kept in O.tags (JSON), or "" when no earthquake shakes it."""
+    return O.tags[TAG] if TAG in O.tags.keys() else ""
+
+
 def active_record():
     """(Record, direction, start) of the scene's earthquake, or None."""
     from yade import O
-    if TAG not in O.tags.keys():
+    if not shaking(O):
         return None
     d = json.loads(O.tags[TAG])
     return Record(d["record"]["t"], d["record"]["a"], name=d["record"]["name"]), d["direction"], d["start"]

@@ -470,7 +470,7 @@ def _pseudo_static():
     """(kh, kv) of the scene's pseudo-static load (slope.set_seismic), (0, 0) without one or while a record shakes."""
     from yade import O
     from . import earthquake, omega, slope_scene
-    if earthquake.TAG in O.tags.keys() or slope_scene._STATIC_GRAVITY_TAG not in O.tags.keys():
+    if earthquake.shaking(O) or slope_scene._STATIC_GRAVITY_TAG not in O.tags.keys():
         return 0.0, 0.0
     g0 = slope_scene.static_gravity()
     gm = math.sqrt(sum(v * v for v in g0))
