@@ -7,16 +7,10 @@ import math
 
 import pytest
 
-from yaderun import run_ok
+from yaderun import BLOCK_ON_BASE, run_ok
 
-SHAKE = r"""
-import math
-from yade_rbsm import polygon2d, engines, earthquake, slope
-rock = RbsmMat(young=1e8, density=2000, frictionAngle=0.3)
-O.materials.append(rock)
-O.bodies.append(polygon2d([(-5, -1), (5, -1), (5, 0), (-5, 0)], rock, fixed=True))
-O.bodies.append(polygon2d([(0, 0), (1, 0), (1, 1), (0, 1)], rock))
-O.engines = engines()
+SHAKE = BLOCK_ON_BASE % dict(FRICTION=0.3) + r"""
+from yade_rbsm import earthquake, slope
 slope.set_earthquake(earthquake.Record.sine(0.5, 1.0, 2.0), direction=1)
 O.run(300, True)
 t, gx = O.time, O.engines[-1].gravity[0]

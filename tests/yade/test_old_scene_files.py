@@ -8,16 +8,10 @@ YADE messages. Files of this build load as before; the record is found in binary
 import os
 import re
 
-from yaderun import run_ok
+from yaderun import BLOCK_ON_BASE, run_ok
 
-SAVE = r"""
-import yade_rbsm
-from yade_rbsm import polygon2d, engines, save_format
-rock = RbsmMat(young=1e8, density=2000, frictionAngle=0.6)
-O.materials.append(rock)
-O.bodies.append(polygon2d([(-5, -1), (5, -1), (5, 0), (-5, 0)], rock, fixed=True))
-O.bodies.append(polygon2d([(0, 0), (1, 0), (1, 1), (0, 1)], rock))
-O.engines = engines()
+SAVE = BLOCK_ON_BASE % dict(FRICTION=0.6) + r"""
+from yade_rbsm import save_format
 O.run(20, True)
 O.save("scene.xml"); O.save("scene.yade.gz")
 report(binary=save_format.recorded("scene.yade.gz"), now=save_format.fields())

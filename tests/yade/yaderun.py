@@ -13,6 +13,17 @@ SOURCE_DIR = os.environ.get("RBSM_SOURCE_DIR", os.path.normpath(os.path.join(HER
 BUILD_DIR = os.path.abspath(os.environ.get("RBSM_BUILD_DIR", os.path.join(SOURCE_DIR, "build")))
 LAUNCHER = os.path.abspath(os.environ.get("RBSM_LAUNCHER", os.path.join(BUILD_DIR, "yade-rbsm")))
 
+# A free 1 m block resting on a fixed 10 m base of one RbsmMat (young 1e8, density 2000, frictionAngle FRICTION),
+# O.engines = engines(): the scene several scripts start from; `%`-format it with FRICTION (radians).
+BLOCK_ON_BASE = """
+from yade_rbsm import polygon2d, engines
+rock = RbsmMat(young=1e8, density=2000, frictionAngle=%(FRICTION)g)
+O.materials.append(rock)
+O.bodies.append(polygon2d([(-5, -1), (5, -1), (5, 0), (-5, 0)], rock, fixed=True))
+O.bodies.append(polygon2d([(0, 0), (1, 0), (1, 1), (0, 1)], rock))
+O.engines = engines()
+"""
+
 PRELUDE = """
 import json as _json
 def report(**kw):
