@@ -73,7 +73,10 @@ slice base):
   direction.  Fellenius: ``N' = W (1 - kv) cos(alpha) - kh W sin(alpha) - u l``,
   driving ``W (1 - kv) sin(alpha) + kh W cos(alpha)`` along a polyline's base,
   ``+ kh W (yc - y_mid) / R`` about a circle's centre; Bishop: ``W (1 - kv)``
-  in the numerator and the circle's driving moment.  Spencer refuses it.
+  in the numerator and the circle's driving moment; Spencer: the same
+  terms in Q below, and moment equilibrium ``sum Q cos(alpha - theta) =
+  sum kh W ((yc - y_mid) / R - cos(alpha))`` (kh W acts at mid-height, not on
+  the base through which Q is taken).
 
 * Spencer (1967), circle: the interslice forces are parallel, at an
   angle theta; the resultant on each slice's sides is::
@@ -618,6 +621,7 @@ class Result:
     iterations: int = 0
     slices: Optional[Slices] = field(default=None, repr=False)
     notes: str = ""
+    theta: Optional[float] = None  # Spencer: the interslice forces' angle [deg]
 
     def row(self) -> str:
         return f"{self.method:<28s} {self.shear:12.1f} {self.normal:12.1f} {self.fs:8.3f}"
@@ -807,12 +811,13 @@ def spencer_circle(slope: Slope, circle, n: int = 50, tol: float = 1e-10) -> Res
 
     if not isinstance(circle, Circle):
         circle = Circle(*circle)
-    if slope.kh or slope.kv:
-        raise ValueError("Spencer: no pseudo-static load (kh, kv) in this implementation yet: use Bishop or Fellenius")
     sl = circle_slices(slope, circle, n)
     a, tp = sl.alpha, sl.tan_phi
-    drive = sl.W * np.sin(a)
-    resist0 = sl.c * sl.l + (sl.W * np.cos(a) - sl.u * sl.l) * tp
+    # W (1 - kv) down and kh W in the sliding direction, resolved along and normal to each base (Fellenius's terms)
+    drive = sl.Wv * np.sin(a) + sl.kh * sl.W * np.cos(a)
+    resist0 = sl.c * sl.l + (sl.Wv * np.cos(a) - sl.kh * sl.W * np.sin(a) - sl.u * sl.l) * tp
+    # kh W acts at mid-height, not on the base: the moment balance about the centre keeps its arm's difference
+    seismic_moment = float(np.sum(sl.kh * sl.W * ((circle.yc - sl.y_mid) / circle.R - np.cos(a)))) if sl.kh else 0.0
 
     def q(F, th):
         d = a - th
@@ -822,7 +827,7 @@ def spencer_circle(slope: Slope, circle, n: int = 50, tol: float = 1e-10) -> Res
         w = np.cos(a - th) if moment else 1.0
 
         def g(F):
-            return float(np.sum(q(F, th) * w))
+            return float(np.sum(q(F, th) * w)) - (seismic_moment if moment else 0.0)
 
         def valid(F):  # every slice's denominator > 0 (Bishop's m_alpha condition)
             d = a - th
@@ -856,10 +861,10 @@ def spencer_circle(slope: Slope, circle, n: int = 50, tol: float = 1e-10) -> Res
     den = np.cos(d) * (1.0 + np.tan(d) * tp / F)
     if np.any(den <= 0):
         raise ValueError(f"Spencer: slice denominator <= 0 at theta = {math.degrees(th):.1f} deg on {circle}")
-    Np = (sl.W * np.cos(a) - sl.u * sl.l) + q(F, th) * np.sin(d)  # normal to the base from the slice's equilibrium
-    r = Result("Spencer (circle)", F, float(np.sum(Np)), float(np.sum(drive)), F * float(np.sum(drive)), sl.n, circle,
-               0, sl, notes=f"theta = {math.degrees(th):.2f} deg")
-    return r
+    # N' from the slice's balance normal to its base (S - drive = Q cos d along it)
+    Np = (sl.Wv * np.cos(a) - sl.kh * sl.W * np.sin(a) - sl.u * sl.l) - q(F, th) * np.sin(d)
+    return Result("Spencer (circle)", F, float(np.sum(Np)), float(np.sum(drive)), F * float(np.sum(drive)), sl.n, circle,
+                  0, sl, notes=f"theta = {math.degrees(th):.2f} deg", theta=math.degrees(th))
 
 
 # --------------------------------------------------------------------------

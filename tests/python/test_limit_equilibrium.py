@@ -524,14 +524,14 @@ def _mass_moments(s, circle, n=20000):
     return A, xbar, ybar, arc
 
 
-@pytest.mark.parametrize("method", ["fellenius", "bishop"])
+@pytest.mark.parametrize("method", ["fellenius", "bishop", "spencer"])
 def test_pseudo_static_circle_phi_zero_is_the_moment_balance(method):
-    """phi = 0: Fellenius and Bishop are both the moment balance about the centre, FS = c L R / (W (1 - kv) |x̄ - xc|
+    """phi = 0: Fellenius, Bishop and Spencer are all the moment balance about the centre, FS = c L R / (W (1 - kv) |x̄ - xc|
     + kh W (yc - ȳ)) with the sliding mass's centroid (x̄, ȳ) and arc length L computed without slices."""
     c, gamma, kh, kv = 30.0, 18.0, 0.15, 0.05
     s = _wedge(c=c, phi=0.0, gamma=gamma, kh=kh, kv=kv)
     circle = le.Circle(-2.0, 22.0, 22.3)
-    fn = le.fellenius_circle if method == "fellenius" else le.bishop_circle
+    fn = dict(fellenius=le.fellenius_circle, bishop=le.bishop_circle, spencer=le.spencer_circle)[method]
     r = fn(s, circle, n=400)
     A, xbar, ybar, arc = _mass_moments(s, circle)
     W = gamma * A
@@ -540,14 +540,61 @@ def test_pseudo_static_circle_phi_zero_is_the_moment_balance(method):
     assert le.bishop_circle(_wedge(c=c, phi=0.0, gamma=gamma), circle, n=400).fs > r.fs  # the load lowers it
 
 
-def test_pseudo_static_lowers_bishop_and_spencer_says_it_has_none():
+def test_pseudo_static_lowers_bishop_and_spencer():
     s0, s1 = _wedge(), _wedge(kh=0.1)
     circle = le.Circle(-2.0, 22.0, 22.3)
     assert le.bishop_circle(s1, circle).fs < le.bishop_circle(s0, circle).fs
+    assert le.spencer_circle(s1, circle).fs < le.spencer_circle(s0, circle).fs
     assert le.critical_circle(s1, (-6, 6), (12, 26), nx=7, ny=7, through=(0, 0), method="bishop").fs < \
         le.critical_circle(s0, (-6, 6), (12, 26), nx=7, ny=7, through=(0, 0), method="bishop").fs
-    with pytest.raises(ValueError, match="Spencer.*pseudo-static"):
-        le.spencer_circle(s1, circle)
     for bad in (dict(kh=-0.1), dict(kh=1.0), dict(kv=1.0), dict(kh=float("nan"))):
         with pytest.raises(ValueError, match="kh|kv"):
             _wedge(**bad)
+
+
+def _spencer_residuals(s, r, circle):
+    """The whole sliding mass's equilibrium under Spencer's answer (F, theta), from the slices' own forces: the base
+    normal N' from each slice's balance normal to its base with the interslice resultant Q at theta, the
+    mobilised shear S = (c l + N' tan phi) / F; returns the sums of horizontal and vertical forces and the moment
+    about the centre, each over the weight (and over W R). Computed here without Spencer's reduced equations."""
+    sl = r.slices
+    F, th = r.fs, math.radians(r.theta)
+    a, d = sl.alpha, sl.alpha - th
+    # the driving and normal loads of W (1 - kv) down and kh W in the sliding direction
+    drive = sl.Wv * np.sin(a) + sl.kh * sl.W * np.cos(a)
+    normal_load = sl.Wv * np.cos(a) - sl.kh * sl.W * np.sin(a)
+    # Q from the two base-aligned balances: S - drive = Q cos d, N' = normal_load - u l - Q sin d
+    Q = ((sl.c * sl.l + (normal_load - sl.u * sl.l) * sl.tan_phi) / F - drive) / (np.cos(d) + np.sin(d) * sl.tan_phi / F)
+    Np = normal_load - sl.u * sl.l - Q * np.sin(d)
+    S = (sl.c * sl.l + Np * sl.tan_phi) / F
+    # every external force on the mass in the drawing's frame: the mass slides towards sl.direction
+    k = sl.direction
+    tx, ty = k * np.cos(a), -np.sin(a)  # along the base, the way the mass slides (down where alpha > 0)
+    nx, ny = k * np.sin(a), np.cos(a)  # the base's normal, into the mass
+    fx = k * sl.kh * sl.W + (Np + sl.u * sl.l) * nx - S * tx
+    fy = -sl.Wv + (Np + sl.u * sl.l) * ny - S * ty
+    # moments about the centre, (p - c) x f with each force at its point: W and kh W at the column's mid-height,
+    # the base forces at the base's middle
+    def moment(px, py, gx, gy):
+        return (px - circle.xc) * gy - (py - circle.yc) * gx
+    m = (moment(sl.x, sl.y_mid, k * sl.kh * sl.W, -sl.Wv)
+         + moment(sl.x, sl.y_base, (Np + sl.u * sl.l) * nx - S * tx, (Np + sl.u * sl.l) * ny - S * ty))
+    W = float(np.sum(sl.W))
+    return float(np.sum(fx)) / W, float(np.sum(fy)) / W, float(np.sum(m)) / (W * circle.R)
+
+
+@pytest.mark.parametrize("kh,kv,phi", [(0.0, 0.0, 30.0), (0.1, 0.0, 30.0), (0.2, 0.05, 20.0), (0.15, -0.1, 35.0)])
+def test_pseudo_static_spencer_balances_forces_and_moments(kh, kv, phi):
+    """Spencer with kh, kv: the mass is in equilibrium of horizontal and vertical forces and of moments about the
+    centre with the slices' own forces (to 1e-8 of the weight), and its FS lies within 3 % of Bishop's (which
+    balances moments only), as without the load."""
+    s = _wedge(c=10.0, phi=phi, kh=kh, kv=kv)
+    circle = le.Circle(-2.0, 22.0, 22.3)
+    r = le.spencer_circle(s, circle, n=100)
+    fx, fy, m = _spencer_residuals(s, r, circle)
+    assert max(abs(fx), abs(fy), abs(m)) < 1e-8, (fx, fy, m)
+    b = le.bishop_circle(s, circle, n=100).fs
+    print("kh %g kv %g phi %g: Spencer %.5f (theta %.2f deg), Bishop %.5f" % (kh, kv, phi, r.fs, r.theta, b))
+    assert r.fs == pytest.approx(b, rel=0.03)
+    record("Limit equilibrium", "Spencer with kh %g, kv %g (phi %g): force and moment balance of the mass" % (kh, kv, phi),
+           max(abs(fx), abs(fy), abs(m)), 0.0, "equilibrium (residual / W)", tolerance="residual < 1e-8 of W")
