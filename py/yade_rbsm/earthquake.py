@@ -1,12 +1,14 @@
 """Earthquake records in the block model, and Newmark's rigid sliding block for comparison.
 
-A record is the horizontal acceleration of the ground (the fixed base) along +x over time. The model is run in
-the frame of its rigid base: every block feels gravity plus the inertial acceleration −a_g(t) (d'Alembert), so
-displacements are relative to the base, as a slope engineer reads them, and the base stays where it was drawn.
-For a rigid base this is the same motion as prescribing the base's acceleration; a compliant (absorbing) base is
-not modelled. The load is NewtonIntegrator's gravity, set before every step by the engine :func:`apply` installs
-(a PyRunner labelled ``earthquake``), so O.energy's gravWork counts the inertial force's work and the balance
-of an undamped run still closes.
+A record is the horizontal acceleration of the ground (the fixed base) along +x over time. With the rigid base
+(the default) the model is run in the frame of its base: every block feels gravity plus the inertial acceleration
+−a_g(t) (d'Alembert), so displacements are relative to the base, as a slope engineer reads them, and the base
+stays where it was drawn: the same motion as prescribing the base's acceleration. The load is NewtonIntegrator's
+gravity, set before every step by the engine :func:`apply` installs (a PyRunner labelled ``earthquake``), so
+O.energy's gravWork counts the inertial force's work and the balance of an undamped run still closes. A rigid base
+reflects every wave that comes down to it. With ``base="compliant"`` (:mod:`quiet_base`) the model is in the
+ground's frame, its base blocks are let go on Lysmer's dashpots with the record as a stress input, and waves
+leave through the base (the base's work is O.energy's baseWork).
 
 Newmark (1965): a rigid block on a plane of dip ψ with friction φ, under a horizontal inertial acceleration a(t)
 out of the face, slides down the plane while a > a_y = g tan(φ − ψ) (the yield acceleration, kh at FS = 1), with
@@ -90,6 +92,31 @@ class Record:
         w = (time - t[lo]) / (t[hi] - t[lo])
         return self.a[lo] + w * (self.a[hi] - self.a[lo])
 
+    def velocity(self, time):
+        """The ground velocity at *time* [m/s]: the acceleration integrated from the record's start (exactly, for
+        the linear interpolation of :meth:`at`); constant after the record's end (a record not corrected for its
+        baseline leaves the ground moving)."""
+        t, a = self.t, self.a
+        if not hasattr(self, "_v"):
+            self._v = [0.0]
+            for i in range(1, len(t)):
+                self._v.append(self._v[-1] + 0.5 * (a[i - 1] + a[i]) * (t[i] - t[i - 1]))
+            # a nonzero first sample is a step at t[0] (at() is 0 before it): from 0, as at() integrates
+        if time <= t[0]:
+            return 0.0
+        if time >= t[-1]:
+            return self._v[-1]
+        lo, hi = 0, len(t) - 1
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            if t[mid] <= time:
+                lo = mid
+            else:
+                hi = mid
+        h = time - t[lo]
+        slope = (a[hi] - a[lo]) / (t[hi] - t[lo])
+        return self._v[lo] + a[lo] * h + 0.5 * slope * h * h
+
     @property
     def duration(self):
         return self.t[-1]
@@ -114,39 +141,61 @@ class Record:
 _active = {}  # the record of the scene's engine, parsed once (key: the tag's text)
 
 
-def apply(record, direction=1, start=None):
+def apply(record, direction=1, start=None, base="rigid", impedance=None, base_ids=None):
     """Shakes the scene's base with *record* (a :class:`Record` of ground acceleration) along the model's +x
     (*direction* +1) or −x (−1), from O.time (or *start*, the scene time of the record's zero): installs the
     engine, keeps the record in O.tags (a saved scene goes on shaking after O.load). ``apply(None)`` stops it and
-    gives the static gravity back. Returns the engine."""
+    gives the static gravity back (a compliant base is fixed again where it stands). Returns the engine.
+
+    *base*: ``"rigid"`` (the model in its base's frame) or ``"compliant"`` (:mod:`quiet_base`: the fixed blocks at
+    the model's bottom, or *base_ids*, let go on dashpots of *impedance* = (ρ c_p, ρ c_s) [Pa·s/m], by default the
+    base material's; the record is then an outcrop motion)."""
     from yade import O, wrapper
-    from . import omega, slope_scene
+    from . import mpi, omega, quiet_base, slope_scene
     if record is not None and not isinstance(record, Record):
         raise ValueError("earthquake: give a yade_rbsm.earthquake.Record (Record.sine, Record.from_csv, Record(t, a)); "
                          "got %r" % (record,))
     if direction not in (1, -1):
         raise ValueError("earthquake: direction must be +1 or -1 (the record's positive acceleration along the model's "
                          "+x or -x), got %r" % (direction,))
+    if base not in ("rigid", "compliant"):
+        raise ValueError("earthquake: base must be 'rigid' (the model in its base's frame) or 'compliant' (Lysmer's "
+                         "absorbing base), got %r" % (base,))
+    if base == "rigid" and (impedance is not None or base_ids is not None):
+        raise ValueError("earthquake: impedance and base_ids are for base='compliant'")
     start = O.time if start is None else number("earthquake", "start", start)
+    quiet = None
+    if record is not None and base == "compliant":
+        if mpi.distributed():
+            raise ValueError("earthquake: a compliant base is not available under yade.mpy yet (its base blocks' "
+                             "forces are set from Python on one rank): use base='rigid' or run serially")
+        quiet = quiet_base.describe(O, quiet_base.base_blocks(O, base_ids), impedance)
     # (checked first: a refused record leaves the one shaking the scene in place)
     O.engines = [e for e in O.engines if getattr(e, "label", "") != LABEL]
+    if shaking(O) and json.loads(O.tags[TAG]).get("base"):
+        quiet_base.hold(O, json.loads(O.tags[TAG])["base"])
     g0 = slope_scene.static_gravity()
+    omega.newton(O).gravity = tuple(g0)
     if record is None:
-        omega.newton(O).gravity = tuple(g0)
         if TAG in O.tags.keys():
             O.tags[TAG] = ""  # (YADE's tags cannot be deleted: empty is none)
         return None
-    O.tags[TAG] = json.dumps(dict(record=json.loads(record.to_json()), direction=direction, start=start, g0=list(g0)))
+    if quiet is not None:
+        quiet_base.let_go(O, quiet)
+    O.tags[TAG] = json.dumps(dict(record=json.loads(record.to_json()), direction=direction, start=start, g0=list(g0),
+                                  base=quiet))
     engine = wrapper.PyRunner(command="import yade_rbsm.earthquake as _eq; _eq.step()", iterPeriod=1, label=LABEL)
     O.engines = omega.before_newton(list(O.engines), engine)
-    step()
+    if quiet is None:
+        step()  # the gravity of the coming step (the compliant base measures its reactions in the step)
     return engine
 
 
 def step():
-    """The engine's command: gravity = static gravity − direction · a_g(t) x̂ at the middle of the coming step."""
+    """The engine's command. Rigid base: gravity = static gravity − direction · a_g(t) x̂ at the middle of the
+    coming step. Compliant base: the base blocks' reactions and dashpots (:func:`quiet_base.apply_tractions`)."""
     from yade import O
-    from . import omega
+    from . import omega, quiet_base
     text = shaking(O)
     if not text:
         return
@@ -154,10 +203,22 @@ def step():
         _active.clear()
         d = json.loads(text)
         _active[text] = (Record(d["record"]["t"], d["record"]["a"], name=d["record"]["name"]), d["direction"], d["start"],
-                         d["g0"])
-    record, direction, start, g0 = _active[text]
-    a = record.at(O.time + 0.5 * O.dt - start)
-    omega.newton(O).gravity = (g0[0] - direction * a, g0[1], g0[2])
+                         d["g0"], d.get("base"))
+    record, direction, start, g0, base = _active[text]
+    if base is None:
+        a = record.at(O.time + 0.5 * O.dt - start)
+        omega.newton(O).gravity = (g0[0] - direction * a, g0[1], g0[2])
+        return
+    if base["reaction"] is None:  # the first step: the forces that held the base as it stood
+        base["reaction"] = quiet_base.static_reaction(O, base, g0)
+        d = json.loads(text)
+        d["base"] = base
+        O.tags[TAG] = json.dumps(d)
+        _active[O.tags[TAG]] = _active.pop(text)
+    power = quiet_base.apply_tractions(O, base, (direction * record.velocity(O.time - start), 0.0))
+    if O.trackEnergy:
+        O.energy[quiet_base.ENERGY] = (O.energy[quiet_base.ENERGY] if quiet_base.ENERGY in O.energy.keys() else 0.0) \
+            - power * O.dt
 
 
 def shaking(O):

@@ -238,15 +238,18 @@ class SlopeModel:
         st = self._record("pseudo-static", dict(kh=kh, kv=kv, towards=towards), dict(gravity=list(g)), w0)
         return self._settle_again(settle) if settle else st
 
-    def set_earthquake(self, record, direction=1):
+    def set_earthquake(self, record, direction=1, base="rigid", impedance=None, base_ids=None):
         """A ground-acceleration history (:class:`earthquake.Record`) along the model's +x (*direction* +1) or −x
-        for the dynamic stages that follow (:func:`earthquake.apply`: the model runs in its rigid base's frame,
-        displacements relative to the base); None stops it. Recorded."""
+        for the dynamic stages that follow (:func:`earthquake.apply`); None stops it. *base* ``"rigid"``: the model
+        runs in its base's frame, displacements relative to the base; ``"compliant"``: the base blocks are let go on
+        Lysmer's absorbing dashpots (*impedance*, *base_ids*: :mod:`quiet_base`), displacements are absolute.
+        Recorded."""
         from . import earthquake
         w0 = time.time()
-        earthquake.apply(record, direction=direction)
+        earthquake.apply(record, direction=direction, base=base, impedance=impedance, base_ids=base_ids)
         figures = dict(pga_g=record.pga / earthquake.G, record_duration=record.duration) if record is not None else {}
-        return self._record("earthquake", dict(record=getattr(record, "name", None), direction=direction), figures, w0)
+        return self._record("earthquake", dict(record=getattr(record, "name", None), direction=direction, base=base),
+                            figures, w0)
 
     def yield_acceleration(self, towards=1, rtol=0.01, kh_start=0.1, kh_max=1.0, settle=None, **fos_kw):
         """The yield acceleration k_y: the horizontal pseudo-static coefficient (towards the face, *towards*) at
