@@ -1,4 +1,5 @@
 #include <pkg/rbsm/Law2_RbsmGeom_RbsmPhys_MohrCoulomb.hpp>
+#include <pkg/rbsm/kernel/Hydrostatic.hpp>
 #include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
 
 #include <pkg/rbsm/DeformableState.hpp>
@@ -256,27 +257,19 @@ namespace {
 }
 
 namespace {
-	// The height of the phreatic polyline (x strictly increasing) at x, level beyond its ends.
-	Real phreaticHeight(const std::vector<Vector2r>& line, Real x)
-	{
-		if (x <= line.front().x()) return line.front().y();
-		for (std::size_t i = 1; i < line.size(); ++i)
-			if (x <= line[i].x()) return line[i - 1].y() + (line[i].y() - line[i - 1].y()) * (x - line[i - 1].x()) / (line[i].x() - line[i - 1].x());
-		return line.back().y();
-	}
-
 	// Water in the joint: the pore pressure u_k = γw (h(x_k) − y_k) ≥ 0 at each point pushes the blocks
-	// apart (force u_k a_k along the normal on body 2, as a compression would); returns Σ u_k a_k. With
-	// O.trackEnergy, work gets the water's work on the blocks, Σ u_k a_k (v_k·n) dt (an opening joint: > 0).
-	template <bool Strain> Real addWater(const RbsmGeom& g, const JointStep& j, const std::vector<Vector2r>& line, Real gammaW, int n, JointSums& sum, Real& work)
+	// apart (force u_k a_k along the normal on body 2, as a compression would), or with sign −1 presses them
+	// together (a dry contact in open water); returns Σ ±u_k a_k. With O.trackEnergy, work gets the water's work
+	// on the blocks, Σ ±u_k a_k (v_k·n) dt (an opening wet joint: > 0).
+	template <bool Strain> Real addWater(const RbsmGeom& g, const JointStep& j, const std::vector<Vector2r>& line, Real gammaW, Real sign, int n, JointSums& sum, Real& work)
 	{
 		Real total = 0;
 		for (int k = 0; k < n; k++) {
 			const Real     s = g.rule->s[k];
 			const Vector2r x = g.p0 + s * j.seg;
-			const Real     u = gammaW * std::max<Real>(0, phreaticHeight(line, x.x()) - x.y());
+			const Real     u = gammaW * std::max<Real>(0, rbsm::phreaticHeight(line, x.x()) - x.y());
 			if (u <= 0) continue;
-			const Real pushed = u * g.rule->w[k] * j.area;
+			const Real pushed = sign * u * g.rule->w[k] * j.area;
 			addForceAt<Strain>(j, s, pushed * g.normal, sum);
 			total += pushed;
 			if (j.trackEnergy) work += pushed * j.kin.velocity(s).dot(g.normal) * j.dt;
@@ -376,8 +369,15 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 		for (int k = 0; k < n; k++)
 			addPoint<Strain>(g, p, j, k, sum);
 	Real waterWork = 0;
-	if (!phreatic.empty() && (p.water || waterAll)) p.waterForce = addWater<Strain>(g, j, phreatic, waterUnitWeight, n, sum, waterWork);
-	else if (p.waterForce != 0) p.waterForce = 0; // the water was taken away
+	if (!phreatic.empty()) {
+		const bool wet = p.water || waterAll;
+		// in open water the faces' pressure is OpenWaterPressure's: a wet joint's faces are in it, a closed dry
+		// contact's are taken off (once it opens, the water is in it)
+		const bool closed = g.separation <= 1e-9 * (g.h1 + g.h2);
+		if (openWater) p.waterForce = wet || !closed ? 0 : addWater<Strain>(g, j, phreatic, waterUnitWeight, -1, n, sum, waterWork);
+		else if (wet) p.waterForce = addWater<Strain>(g, j, phreatic, waterUnitWeight, 1, n, sum, waterWork);
+		else if (p.waterForce != 0) p.waterForce = 0;
+	} else if (p.waterForce != 0) p.waterForce = 0; // the water was taken away
 	const Real torque2 = sum.momentP0 + cross(g.p0 - g.centroid2, sum.force);
 	const Real torque1 = -(sum.momentP0 + cross(g.p0 - g.centroid1, sum.force));
 	p.normalForce      = sum.normalForce;

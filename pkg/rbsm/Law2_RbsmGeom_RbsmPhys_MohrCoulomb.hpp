@@ -41,10 +41,14 @@ public:
 		"Water (UDEC's hydrostatic joint pressure): with a :yref:`phreatic<Law2_RbsmGeom_RbsmPhys_MohrCoulomb.phreatic>` surface, each "
 		"point of a joint that takes water (:yref:`RbsmPhys.water`, or every joint with :yref:`waterAll<Law2_RbsmGeom_RbsmPhys_MohrCoulomb.waterAll>`) "
 		"below it has the pore pressure u = γw·(h(x) − y), which pushes the two blocks apart with u·a_k; the springs carry the "
-		"effective stress, so the strength is c + σn′ tanφ with σn′ = σn − u. The water stays as given (no flow); its work on the blocks is O.energy's waterWork.",
+		"effective stress, so the strength is c + σn′ tanφ with σn′ = σn − u. The water stays as given (no flow); its work on the blocks is O.energy's waterWork. "
+		"With :yref:`openWater<Law2_RbsmGeom_RbsmPhys_MohrCoulomb.openWater>` the blocks stand in open water: the pressure on their faces is "
+		":yref:`OpenWaterPressure`'s (the whole boundary below the water table, buoyancy included), so a wet joint adds none of its own, and a "
+		"dry contact below the water table is pressed shut by the water around its blocks (its faces' pressure taken off them).",
 		((std::vector<Vector2r>, phreatic, , Attr::triggerPostLoad, "The phreatic surface (water table) [m], a polyline of strictly increasing x in the blocks' plane, continued level beyond its ends; empty (default): no water, no cost."))
 		((Real, waterUnitWeight, 9810, Attr::triggerPostLoad, "Unit weight of the water γw [N/m³]."))
 		((bool, waterAll, false, , "Every joint takes water (UDEC: every contact), not only those with RbsmPhys.water."))
+		((bool, openWater, false, , "The blocks stand in open water (a reservoir, a submerged toe): :yref:`OpenWaterPressure` puts the water's pressure on the faces of every block, and the joints add only what the faces' pressure leaves out (a dry contact: pressed shut). yade_rbsm.slope.set_water(open_water=True) sets both."))
 		((Real, dampingRatio, 0, Attr::triggerPostLoad, "Viscous contact damping as a fraction of critical damping of the joint (normal and shear), ξ; 0 disables it (no cost). The shear dashpot acts while the joint sticks, and spring and dashpot together stay within the Mohr-Coulomb strength of the springs' normal force: the dashpot damps, it adds no friction."))
 		((int, plastDissipIx, -1, (Attr::hidden | Attr::noSave), "Index of plastDissip in O.energy."))
 		((int, elastPotentialIx, -1, (Attr::hidden | Attr::noSave), "Index of elastPotential in O.energy."))

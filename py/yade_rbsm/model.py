@@ -218,14 +218,14 @@ class SlopeModel:
         self._record("joint strengths", {}, dict(joints_given=n), w0)
         return self.settle(**dict(dict(name="equilibrium"), **settle))
 
-    def set_water(self, phreatic, joints="sets", unit_weight=9810.0, settle=True):
-        """Water in the joints (:func:`slope.set_water`), then equilibrium again (*settle*: True, or a dict of
-        :meth:`settle`'s arguments); recorded."""
+    def set_water(self, phreatic, joints="sets", unit_weight=9810.0, settle=True, open_water=False):
+        """Water in the joints (:func:`slope.set_water`; *open_water*: on the blocks' free faces too), then
+        equilibrium again (*settle*: True, or a dict of :meth:`settle`'s arguments); recorded."""
         from . import slope
         w0 = time.time()
-        wet = slope.set_water(phreatic, joints=joints, unit_weight=unit_weight)
-        self._record("water", dict(phreatic=[list(p) for p in phreatic] if phreatic is not None else None, joints=joints),
-                     dict(joints_wet=wet), w0)
+        wet = slope.set_water(phreatic, joints=joints, unit_weight=unit_weight, open_water=open_water)
+        self._record("water", dict(phreatic=[list(p) for p in phreatic] if phreatic is not None else None, joints=joints,
+                                   open_water=open_water), dict(joints_wet=wet), w0)
         return self._settle_again(settle) if settle and phreatic is not None else self.stages[-1]
 
     def set_seismic(self, kh, kv=0.0, towards=1, settle=True):

@@ -429,7 +429,7 @@ def give_joint_sets(sb):
     return n
 
 
-def set_water(phreatic, joints="sets", unit_weight=9810.0):
+def set_water(phreatic, joints="sets", unit_weight=9810.0, open_water=False):
     """Water in the joints (UDEC's hydrostatic joint pressure, seed's landslide trigger): below the phreatic
     surface *phreatic* (a polyline of strictly increasing x [m], continued level beyond its ends) each point
     of a wet joint has the pore pressure u = unit_weight x depth below it, which pushes its blocks apart;
@@ -438,13 +438,22 @@ def set_water(phreatic, joints="sets", unit_weight=9810.0):
     jointset_blocks; contacts made later along them too), a tension crack given as a trace included; "all"
     for every joint, the rock's bonded ones too (UDEC: every contact); or a list of set names. The water
     is kept with the scene (O.engines, O.tags), so strength reduction, fos() and dynamic runs take it; it
-    stays as given (no flow): set it again to raise it. None removes it. Returns the number of joints wet."""
+    stays as given (no flow): set it again to raise it. None removes it. Returns the number of joints wet.
+
+    *open_water*: the blocks stand in open water below the line (a reservoir, a flooded toe, a submerged block),
+    so their free faces take the pressure too (OpenWaterPressure: the water's pressure on every block's whole
+    boundary, buoyancy included); a dry contact below the line is then pressed shut by the water around it.
+    Without it (the default) only the wet joints take water, as UDEC's joints do: right for a water table inside
+    a rock slope, whose face above the seepage point is dry."""
     from yade import O, Vector2
     from . import omega
     from .checks import number
     from .geometry import monotone
     law = omega.engine("law", O)
+    if not isinstance(open_water, bool):
+        raise ValueError("set_water: open_water must be True or False, got %r" % (open_water,))
     if phreatic is None:
+        _open_water(O, law, None, 0)
         law.phreatic = []
         for I in omega.joints(O):
             I.phys.water = False
@@ -468,6 +477,7 @@ def set_water(phreatic, joints="sets", unit_weight=9810.0):
     law.waterUnitWeight = unit_weight
     law.phreatic = [Vector2(x, y) for x, y in line]
     law.waterAll = joints == "all"
+    _open_water(O, law, law.phreatic if open_water else None, unit_weight)
     if joints == "all":
         return sum(1 for _ in omega.joints(O))
     wet = set()
@@ -479,6 +489,17 @@ def set_water(phreatic, joints="sets", unit_weight=9810.0):
                 wet.add((I.id1, I.id2))
     O.tags[_SETS_TAG] = json.dumps(sets)
     return len(wet)
+
+
+def _open_water(O, law, line, unit_weight):
+    """The open water's engine (label "openWater", before NewtonIntegrator) with the law's water table, or none."""
+    from yade import wrapper
+    from . import omega
+    O.engines = [e for e in O.engines if getattr(e, "label", "") != "openWater"]
+    law.openWater = line is not None
+    if line is not None:
+        O.engines = omega.before_newton(list(O.engines), wrapper.OpenWaterPressure(
+            phreatic=line, waterUnitWeight=unit_weight, label="openWater"))
 
 
 _STATIC_GRAVITY_TAG = "yade_rbsm.static_gravity"

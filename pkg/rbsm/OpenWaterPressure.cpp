@@ -1,0 +1,67 @@
+#include <pkg/rbsm/OpenWaterPressure.hpp>
+#include <core/Scene.hpp>
+#include <pkg/rbsm/BlockStateCheck.hpp>
+#include <pkg/rbsm/Polygon2D.hpp>
+#include <pkg/rbsm/kernel/Hydrostatic.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace yade {
+
+YADE_PLUGIN((OpenWaterPressure));
+
+void OpenWaterPressure::postLoad(OpenWaterPressure&)
+{
+	if (!(std::isfinite(waterUnitWeight) && waterUnitWeight >= 0))
+		throw std::invalid_argument("OpenWaterPressure.waterUnitWeight: must be a finite number >= 0 (got " + std::to_string(waterUnitWeight) + ")");
+	for (std::size_t i = 0; i < phreatic.size(); ++i)
+		if (!(std::isfinite(phreatic[i].x()) && std::isfinite(phreatic[i].y())) || (i > 0 && !(phreatic[i].x() > phreatic[i - 1].x())))
+			throw std::invalid_argument("OpenWaterPressure.phreatic: point " + std::to_string(i)
+			                            + " is not finite or its x does not increase (a polyline of strictly increasing x)");
+}
+
+void OpenWaterPressure::action()
+{
+	if (phreatic.empty() || waterUnitWeight == 0) return;
+	Real top = phreatic.front().y(); // above it nothing is wet: most dry blocks leave at their first vertex
+	for (const Vector2r& p : phreatic)
+		top = std::max(top, p.y());
+	Real                  work = 0;
+	std::vector<Vector2r> world;
+	if (scene->trackEnergy) lastLoad.resize(scene->bodies->size(), Vector3r::Constant(std::numeric_limits<Real>::quiet_NaN()));
+	for (const auto& b : scene->bodies->body) {
+		if (!b || !b->state || b->subdomain != scene->subdomain || fixedBlock(*b->state)) continue; // (yade.mpy: this rank's)
+		const auto* poly = dynamic_cast<const Polygon2D*>(b->shape.get());
+		if (!poly) continue;
+		const rbsm::Pose2 pose = planarPose(b->state->pos, b->state->ori);
+		world.clear();
+		Real lowest = std::numeric_limits<Real>::infinity();
+		for (const Vector2r& v : poly->vertices) {
+			world.push_back(pose.apply(v));
+			lowest = std::min(lowest, world.back().y());
+		}
+		if (lowest >= top) continue;
+		const Vector2r         c    = b->state->pos.head<2>();
+		const rbsm::WaterLoad  load = rbsm::hydrostaticLoad(world, phreatic, waterUnitWeight, c);
+		const Real             t    = poly->thickness;
+		const Vector3r         f(load.force.x() * t, load.force.y() * t, 0);
+		scene->forces.addForce(b->id, f);
+		scene->forces.addTorque(b->id, Vector3r(0, 0, load.moment * t));
+		if (scene->trackEnergy) {
+			// the last step's work: its move (velocity × dt) by the mean of the loads at its ends (second order:
+			// the load at one end alone left 3 % of a floating block's heave energy after three cycles)
+			const Vector3r now(f.x(), f.y(), load.moment * t);
+			Vector3r&      last = lastLoad[size_t(b->id)];
+			const Vector3r mean = std::isnan(last.x()) ? now : Vector3r(0.5 * (last + now));
+			work += (mean.x() * b->state->vel.x() + mean.y() * b->state->vel.y() + mean.z() * b->state->angVel.z()) * scene->dt;
+			last = now;
+		}
+	}
+	if (work != 0) scene->energy->add(-work, "waterWork", waterWorkIx, /*cumulative*/ false);
+}
+
+} // namespace yade
