@@ -42,7 +42,9 @@ RBSM_CLASSES = frozenset((
     "Ig2_Polygon2D_Sphere_ScGeom", "Ip2_RbsmMat_FrictMat_FrictPhys", "Ig2_Polygon2D_Wall_RbsmGeom",
     "Ig2_Polygon2D_Facet_RbsmGeom", "RbsmPairCheck",
     # deformable blocks (issue 38)
-    "DeformableState", "BlockStrainIntegrator"))
+    "DeformableState", "BlockStrainIntegrator",
+    # blocks in open water (issue 40)
+    "OpenWaterPressure"))
 
 _XML_CLASS = re.compile(rb'class_name="([^"]+)"')
 _BINARY_KEY = re.compile(rb"yade::[A-Za-z_][A-Za-z0-9_]*")
