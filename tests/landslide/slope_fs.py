@@ -7,6 +7,8 @@
 #   ductile  RbsmMat.ductile reaches the joints and survives O.save / O.load
 #   calibration  a small calibration grid from inside a slope scene (which it leaves as it was)
 #   stress   Kulhawy's stress-based FS from the settled blocks' stresses (safety.stress_field), ductile joints
+#   stress_kh  the same with the blocks settled under a pseudo-static kh = 0.1 out of the face (slope.set_seismic),
+#            against Bishop and Spencer with kh
 #   messages  what a user trying these tools ran into: bad calibrate arguments, strength reduction on an
 #            empty scene and on bricks (no mechanism)
 # Prints RESULT <json>.
@@ -109,6 +111,26 @@ elif what == "stress":
                undrained_stress=le.stress_circle(undrained, bishop.circle, field).fs,
                undrained_bishop=le.bishop_circle(undrained, bishop.circle).fs,
                syy=float(syy[0]), sxx=float(sxx[0]), bad_ids=bad_ids)
+elif what == "stress_kh":  # issue 40: the same under a pseudo-static kh = 0.1 out of the face (towards -x)
+    from yade_rbsm import limit_equilibrium as le
+    from yade_rbsm.safety import stress_field
+    sb, _ = scene(ductile=True)
+    sl.settle(tol=1e-4, max_steps=50000, check=200, density_scaling=True)
+    sl.set_seismic(0.1, towards=-1)
+    ok, steps, ratio = sl.settle(tol=1e-4, max_steps=50000, check=200, density_scaling=True)
+    field = stress_field()
+    GL = [(0, 0), (12, 0), (32, 10), (52, 10)]
+    search = dict(x_range=(5, 40), y_range=(10, 50), nx=12, ny=12, refine=3, base=0.0, r_range=(5, 60), nr=19)
+    soil = le.Slope(GL, le.Layer(c=10.0, phi=20.0, gamma=20.0), kh=0.1)
+    bishop = le.critical_circle(soil, **search)
+    kul = le.critical_circle(soil, method="stress", stress=field, min_depth=2.0, **search)
+    undrained = le.Slope(GL, le.Layer(c=10.0, phi=0.0, gamma=20.0), kh=0.1)
+    static = le.critical_circle(le.Slope(GL, le.Layer(c=10.0, phi=20.0, gamma=20.0)), **search)
+    out = dict(ok=ok, bishop=bishop.fs, stress=kul.fs, bishop_static=static.fs, spencer=le.spencer_circle(soil, bishop.circle).fs,
+               undrained_stress=le.stress_circle(undrained, bishop.circle, field).fs,
+               undrained_bishop=le.bishop_circle(undrained, bishop.circle).fs,
+               undrained_static=le.bishop_circle(le.Slope(GL, le.Layer(c=10.0, phi=0.0, gamma=20.0)), bishop.circle).fs,
+               gravity=list(yr.omega.newton(O).gravity))
 elif what == "ductile":
     sb, _ = scene(ductile=True)
     yr.advance(1)

@@ -15,6 +15,7 @@ import os
 import pytest
 
 from conftest import HERE, run_yade
+from verification import record
 
 
 def _run(what):
@@ -94,3 +95,23 @@ def test_stress_based_fs_of_the_settled_blocks_agrees_with_bishop():
     # block's stress (1.185 against Bishop's 1.372); the field ends a block's reach beyond the centroids
     assert r["stress_nobase"] == pytest.approx(r["bishop_nobase"], rel=0.05) and r["lowest_nobase"] > -2.0
     assert "no Polygon2D block" in r["empty"] and "not fixed" in r["empty"]
+
+
+def test_stress_based_fs_under_kh_agrees_with_bishop_and_spencer_under_kh():
+    """Issue 40, "pseudo-static: against the project's Bishop with kh (a circle)": the same slope settled under
+    kh = 0.1 out of the face (slope.set_seismic, towards -x); Kulhawy's FS from the blocks' own stresses on the
+    critical circle against Bishop's and Spencer's with kh (measured 1.1121 against 1.1141 and 1.1135; 1.382
+    without kh), and with phi = 0 on Bishop's circle, where the stress FS is the moment balance of the mass under
+    W and kh W as far as the block stresses are in equilibrium with them (0.4019 against 0.3997; 0.4838 without)."""
+    r = _run("stress_kh")
+    print(r)
+    assert r["ok"] and r["gravity"][0] == pytest.approx(-0.981)
+    assert r["bishop"] < 0.85 * r["bishop_static"]  # the load is there
+    record("Earthquakes", "Griffiths & Lane slope of Voronoi blocks settled under kh 0.1: stress-based FS on the critical circle",
+           r["stress"], r["bishop"], "Bishop with kh (critical circle)", rtol=0.05)
+    assert r["stress"] == pytest.approx(r["bishop"], rel=0.05)
+    assert r["spencer"] == pytest.approx(r["bishop"], rel=0.01)
+    record("Earthquakes", "the same, φ = 0 on Bishop's circle: stress-based FS under kh 0.1", r["undrained_stress"],
+           r["undrained_bishop"], "Bishop with kh (moment balance)", rtol=0.01)
+    assert r["undrained_stress"] == pytest.approx(r["undrained_bishop"], rel=0.01)
+    assert r["undrained_static"] > 1.15 * r["undrained_bishop"]
