@@ -4,8 +4,11 @@
 #include <pkg/rbsm/kernel/BoundaryEdge.hpp>
 #include <pkg/common/Facet.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace yade {
 
@@ -37,12 +40,19 @@ bool Ig2_Polygon2D_Facet_RbsmGeom::go(
 	Eigen::Vector3d world[3];
 	for (int i = 0; i < 3; i++)
 		world[i] = stateBoundary.pos + stateBoundary.ori * f.vertices[i];
-	// a facet lying in the blocks' plane has no trace there and would let the block through without a word
-	const Real z0 = stateBlock.pos.z();
-	if (world[0].z() == z0 && world[1].z() == z0 && world[2].z() == z0) {
-		rbsm_report::stopForPair(planeReports, *scene, "Ig2_Polygon2D_Facet_RbsmGeom", I->getId1(), I->getId2(),
-		                         "meet, but the Facet lies in the plane of the blocks and cannot hold them (stand it across the plane: "
-		                         "its trace on the plane is the boundary the blocks meet; or use a Wall with axis 0 or 1)");
+	// a facet parallel to the blocks' plane (in it, or off it by any amount, round-off included) has no trace
+	// there and would let the block through without a word
+	const Real z0     = stateBlock.pos.z();
+	const Real zSpan  = std::max({ world[0].z(), world[1].z(), world[2].z() }) - std::min({ world[0].z(), world[1].z(), world[2].z() });
+	const Real extent = std::max({ (world[1] - world[0]).norm(), (world[2] - world[1]).norm(), (world[0] - world[2]).norm() });
+	if (zSpan <= 1e-9 * extent) {
+		const bool         inPlane = std::abs(world[0].z() - z0) <= 1e-9 * extent;
+		std::ostringstream msg;
+		msg << "meet, but the Facet lies " << (inPlane ? "in the plane of the blocks" : "parallel to the plane of the blocks")
+		    << (inPlane ? "" : " (at z = " + std::to_string(world[0].z()) + ", the blocks at z = " + std::to_string(z0) + ")")
+		    << " and cannot hold them (stand it across the plane, its normal in the x-y plane: its trace on the plane is the "
+		       "boundary the blocks meet; or use a Wall with axis 0 or 1)";
+		rbsm_report::stopForPair(planeReports, *scene, "Ig2_Polygon2D_Facet_RbsmGeom", I->getId1(), I->getId2(), msg.str().c_str());
 		return false;
 	}
 	rbsm::Vec2 a, b;
