@@ -28,8 +28,23 @@ namespace {
 	}
 }
 
+// Two NewtonIntegrators each move the bodies by the step (a block fell 3.6 times as far as in free fall), silently.
+void RbsmPairCheck::checkEngineList()
+{
+	if (scene->engines.size() == enginesSeen) return; // (a changed list is a new size in practice: cheap every step)
+	enginesSeen = scene->engines.size();
+	const auto newtons = std::count_if(scene->engines.begin(), scene->engines.end(),
+	                                   [](const shared_ptr<Engine>& e) { return e && e->getClassName() == "NewtonIntegrator"; });
+	if (newtons < 2) return;
+	std::cerr << "yade-rbsm: ERROR: RbsmPairCheck: O.engines has " << newtons
+	          << " NewtonIntegrators: each moves the bodies by the step, so they move too far; keep one (last); the run stops after step "
+	          << scene->iter << "\n";
+	rbsm_report::stopAfterThisStep(*scene);
+}
+
 void RbsmPairCheck::action()
 {
+	checkEngineList();
 	const auto& bodies = scene->bodies->body;
 	// Only the pairs the collider made since the last call: InteractionLoop has dispatched them in the step
 	// they were made (a check of every pair at every step cost 2 % of a brick wall's step).

@@ -10,6 +10,12 @@ namespace yade {
 class RbsmPairCheck : public GlobalEngine {
 public:
 	void action() override;
+
+private:
+	void        checkEngineList();
+	std::size_t enginesSeen = 0; // O.engines' length at the last check of the list
+
+public:
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(RbsmPairCheck, GlobalEngine,
 		"No silent pass-through: a pair of bodies, one of them a :yref:`Polygon2D`, whose bounds overlap but for whose shapes "
@@ -22,7 +28,8 @@ public:
 		"A pair with a block that is about to touch (bounds overlap, a geometry functor exists) whose materials have no "
 		":yref:`IPhysFunctor` in the loop would end the process at their first contact (YADE throws inside its OpenMP "
 		"loop); it is reported the same way (asked once per material pair, through yade_rbsm.dispatch) and the run always "
-		"stops after the step. A pair that touches in the step it first overlaps is not seen in time.",
+		"stops after the step. A pair that touches in the step it first overlaps is not seen in time.\n\n"
+		"It also stops a run whose O.engines holds more than one NewtonIntegrator (each would move the bodies by the step).",
 		((bool, stopRun, true, , "Stop the run after the step in which a pair is found (True), or only report it (False)."))
 		((std::vector<std::string>, reported, , Attr::readonly, "The shape pairs reported so far, as 'Polygon2D Box', and the material pairs without IPhys functor, as 'RbsmMat FrictMat' (each once).")),
 		/*ctor*/,

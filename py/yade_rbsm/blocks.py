@@ -76,6 +76,7 @@ def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=F
         # name the block by its world vertices: the body has no id before it is appended
         raise ValueError("polygon2d(%s): %s" % (_describe(pts), e)) from None
     _warn_short_edges(pts)
+    _warn_far_from_origin(pts, cx, cy, math.sqrt(area))
     if color is not None:
         shape.color = color
     b = wrapper.Body()
@@ -93,6 +94,20 @@ def polygon2d(vertices, material, thickness=1.0, fixed=False, color=None, wire=F
     b.state.inertia = (inertia, inertia, inertia)
     b.state.blockedDOFs = "xyzXYZ" if fixed else "zXY"
     return b
+
+
+def _warn_far_from_origin(pts, cx, cy, size, fraction=1e-6):
+    """A warning for a block so far from the origin that double precision resolves its position to more than
+    *fraction* of its size: its motion is rounded (blocks at 1e10-2.4e12 m, resolved to 2e-5-2.5e-3 of their size,
+    moved 2.4-44 % of their size otherwise than the same scene at the origin, one lost its rotation: issue 34's
+    closing pass). UTM coordinates keep 1e-9 m: below the fraction for blocks above 1 mm."""
+    import warnings
+    resolution = math.ulp(max(abs(cx), abs(cy)))
+    if resolution > fraction * size:
+        warnings.warn("polygon2d(%s): at (%.6g, %.6g) m from the origin double precision resolves a position to %.3g m, "
+                      "%.2g of the block's size (%.3g m): its motion would be rounded; move the model near the origin "
+                      "(subtract a reference point from its coordinates)" % (_describe(pts), cx, cy, resolution,
+                                                                             resolution / size, size), stacklevel=3)
 
 
 def _warn_short_edges(pts, fraction=0.02):

@@ -16,10 +16,19 @@ def _check(path):
     """ValueError naming *path* and what is wrong with it as a place to save a scene, or None."""
     if not isinstance(path, str) or not path:
         raise ValueError("O.save: give a file name (got %r), e.g. O.save('scene.yade.gz')" % (path,))
+    if "\0" in path:  # (YADE's save stops the name there: 'bad\0name.xml' wrote a file 'bad')
+        raise ValueError("O.save(%r): the name holds a NUL character, which no file name can" % path)
+    folder = os.path.dirname(os.path.abspath(path))
+    longest = max(len(part.encode()) for part in path.split(os.sep))
+    limit = os.pathconf(folder if os.path.isdir(folder) else "/", "PC_NAME_MAX")
+    if longest > limit:
+        raise ValueError("O.save(%r): a part of the name is %d bytes long, more than the file system allows (%d)"
+                         % (path, longest, limit))
+    if os.path.islink(path) and not os.path.exists(path):
+        raise ValueError("O.save(%r): that is a symbolic link to %r, which does not exist" % (path, os.readlink(path)))
     if os.path.isdir(path):
         raise ValueError("O.save(%r): that is a directory; give a file name in it, e.g. %r"
                          % (path, os.path.join(path, "scene.yade.gz")))
-    folder = os.path.dirname(os.path.abspath(path))
     if not os.path.isdir(folder):
         raise ValueError("O.save(%r): the directory %r does not exist (os.makedirs(%r, exist_ok=True) first)"
                          % (path, folder, folder))
@@ -56,18 +65,51 @@ def install():
         try:
             return load(self, file, quiet)
         except RuntimeError as e:
-            why = save_format.explain(file, e) if isinstance(file, str) and os.path.isfile(file) else None
-            if why is None:
+            if not (isinstance(file, str) and os.path.isfile(file)):
                 raise
+            why = save_format.explain(file, e) or _damaged(file, e)
             raise RuntimeError(why) from e
     load_naming_the_format.__doc__ = load.__doc__
     yade.wrapper.Omega.load = load_naming_the_format
+
+
+def _damaged(path, error):
+    """Why YADE could not read *path* (its own message, *error*, names neither the file nor the cause)."""
+    import gzip
+    import zlib
+    size = os.path.getsize(path)
+    if size == 0:
+        return "O.load(%r): the file is empty" % path
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:2] == b"\x1f\x8b":
+        try:
+            data = gzip.decompress(data)
+        except (OSError, EOFError, zlib.error) as e:
+            return "O.load(%r): a damaged or truncated gzip file (%s; YADE: %s)" % (path, e, error)
+    if b"yade::" not in data:
+        return "O.load(%r): not a YADE scene file (no YADE class in its %d bytes; YADE: %s)" % (path, len(data), error)
+    if data.lstrip().startswith(b"<?xml") and b"</boost_serialization>" not in data[-200:]:
+        return "O.load(%r): the XML ends before the scene does (a truncated copy?; YADE: %s)" % (path, error)
+    import re
+    import yade.system
+    known = set(yade.system.childClasses("Serializable")) | {"Serializable"}
+    unknown = sorted({n.decode() for n in re.findall(rb"yade::([A-Za-z_][A-Za-z0-9_]*)", data)} - known)
+    if unknown:
+        return ("O.load(%r): the file holds classes this YADE does not know: %s (a plugin not loaded, or a class renamed "
+                "since the file was saved; YADE: %s)" % (path, ", ".join(unknown), error))
+    return "O.load(%r): YADE could not read it (%s): a damaged file?" % (path, error)
 
 
 def _install_dt(Omega):
     dt = Omega.dt
 
     def set_dt(self, value):
+        import math
+        import numbers
+        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
+            # (NaN ran 300 steps to NaN positions without a word; None said "'<' not supported ...")
+            raise ValueError("O.dt must be a finite number of seconds (> 0; < 0: the time stepper sets it), got %r" % (value,))
         if value < 0:
             from .scene import time_stepper
             stepper = time_stepper()

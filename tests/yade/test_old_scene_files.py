@@ -60,3 +60,42 @@ def test_old_files_are_refused_naming_fields_and_commit(tmp_path):
     assert "older than its format record" in r["old_unrecorded.xml"] and "RbsmPhys lacks waterForce" in \
         r["old_unrecorded.xml"], r
     assert r["scene.xml"] == "loaded 2" and r["scene.yade.gz"] == "loaded 2", r
+
+
+DAMAGED = r"""
+import yade_rbsm
+out = {}
+for f in FILES:
+    try:
+        O.load(f)
+        out[f] = "loaded %d" % len(O.bodies)
+    except RuntimeError as e:
+        out[f] = str(e)
+report(**out)
+"""
+
+
+def test_damaged_files_are_refused_naming_the_file_and_why(tmp_path):
+    """The closing adversarial pass (issue 34): an empty, a truncated, a non-scene, a bit-flipped gzip file and one
+    naming a class this YADE lacks were refused with YADE's bare "input stream error-Success", "vector::reserve",
+    "unregistered class", naming neither the file nor what is wrong with it."""
+    run_ok(SAVE, workdir=str(tmp_path))
+    xml = open(str(tmp_path / "scene.xml")).read()
+    gz = open(str(tmp_path / "scene.yade.gz"), "rb").read()
+    (tmp_path / "empty.xml").write_text("")
+    (tmp_path / "truncated.xml").write_text(xml[: len(xml) // 2])
+    (tmp_path / "notes.xml").write_text("hello, not a scene\n")
+    flipped = bytearray(gz)
+    flipped[len(gz) // 2] ^= 0xFF
+    (tmp_path / "flipped.yade.gz").write_bytes(bytes(flipped))
+    (tmp_path / "renamed.xml").write_text(xml.replace("yade::RbsmMat", "yade::RbsmMatX"))
+    files = ["empty.xml", "truncated.xml", "notes.xml", "flipped.yade.gz", "renamed.xml"]
+    (r,) = run_ok("FILES = %r\n" % files + DAMAGED, workdir=str(tmp_path))
+    for f in files:
+        print(f, "->", r[f])
+        assert f in r[f], r  # the file is named
+    assert "empty" in r["empty.xml"]
+    assert "ends before" in r["truncated.xml"]
+    assert "not a YADE scene" in r["notes.xml"]
+    assert "damaged" in r["flipped.yade.gz"]
+    assert "RbsmMatX" in r["renamed.xml"] and "does not know" in r["renamed.xml"]

@@ -235,3 +235,28 @@ report(**out)
     (r,) = results(p)
     assert len(r["10000"]) == 1 and "longest edge" in r["10000"][0] and "10000 vertices" in r["10000"][0], r
     assert r["64"] == [] and r["4"] == [], r
+
+
+def test_a_block_too_far_from_the_origin_for_its_size_is_warned_about():
+    """Issue 34's closing pass: blocks at 1e10-2.4e12 m, where double precision resolves a position to 2e-5-2.5e-3 of
+    their size, were accepted without a word and moved 2.4-44 % of their size otherwise than the same scene at the
+    origin. polygon2d says so; UTM coordinates (4.2e6 m) with blocks from 1 mm up and blocks near the origin are
+    not warned about."""
+    p = run_yade("""
+import warnings
+from yade_rbsm import polygon2d
+mat = RbsmMat(young=1e8, density=2000)
+out = {}
+for key, (x, s) in {"1e12": (1e12, 1.0), "1e10": (1e10, 1.0), "utm_1mm": (4212345.678, 1e-3), "origin": (0.0, 1e-3)}.items():
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        polygon2d([(x, x), (x + s, x), (x + s, x + s), (x, x + s)], mat)
+    out[key] = [str(m.message) for m in w]
+report(**out)
+""")
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    (r,) = results(p)
+    print(r)
+    for key in ("1e12", "1e10"):
+        assert len(r[key]) == 1 and "resolves a position to" in r[key][0] and "near the origin" in r[key][0], r
+    assert r["utm_1mm"] == [] and r["origin"] == [], r

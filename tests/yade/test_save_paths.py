@@ -40,3 +40,39 @@ def test_save_names_the_path_and_the_problem(tmp_path):
     assert out["/proc/s.xml"].startswith(("OSError", "ValueError")) and "/proc/s.xml" in out["/proc/s.xml"]
     assert out[os.path.join(work, "s.yade.gz")] == "saved" and os.path.getsize(os.path.join(work, "s.yade.gz")) > 0
     assert r["bodies"] == 1  # O.saveTmp / loadTmp untouched
+
+
+BAD_NAMES = """
+import os
+import yade_rbsm
+from yade_rbsm import polygon2d
+mat = RbsmMat(young=1e8, density=2000)
+O.materials.append(mat)
+O.bodies.append(polygon2d([(0, 0), (1, 0), (1, 1), (0, 1)], mat))
+os.symlink(os.path.join(WORK, "nowhere", "x"), os.path.join(WORK, "dangling.xml"))
+out = {}
+for key, p in [("nul", os.path.join(WORK, "bad\\0name.xml")), ("long", os.path.join(WORK, "a" * 300 + ".xml")),
+               ("dangling", os.path.join(WORK, "dangling.xml"))]:
+    try:
+        O.save(p)
+        out[key] = "saved"
+    except Exception as e:
+        out[key] = "%s: %s" % (type(e).__name__, e)
+out["files"] = sorted(os.listdir(WORK))
+report(out=out)
+"""
+
+
+def test_save_refuses_names_no_file_can_have(tmp_path):
+    """The closing adversarial pass (issue 34): O.save('bad\\0name.xml') returned normally and wrote a file called
+    'bad'; a 300-character name and a dangling symbolic link said "a full disk, or a file system that refused
+    it?". Each is refused before anything is written, saying what is wrong with the name."""
+    p = run_yade("WORK = %r\n" % str(tmp_path) + BAD_NAMES)
+    assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
+    (r,) = results(p)
+    out = r["out"]
+    print(out)
+    assert out["nul"].startswith("ValueError") and "NUL" in out["nul"]
+    assert out["long"].startswith("ValueError") and "255" in out["long"]
+    assert out["dangling"].startswith("ValueError") and "symbolic link" in out["dangling"] and "nowhere" in out["dangling"]
+    assert out["files"] == ["dangling.xml"]  # nothing written
