@@ -38,6 +38,20 @@ inline void requireSyncEngine(bool split, bool deferErrors)
 	                           "or run with yade_rbsm.mpi.mpirun, which adds it.");
 }
 
+// The sync engine taken out of a list that had it (deferErrors still set) is as silent: it stamps each step it
+// runs in (RbsmTimeStepper.syncedAt), so a split scene's step without the stamp of the one before is refused.
+inline void requireSyncEachStep(long iter, long& splitSince, long syncedAt)
+{
+	if (splitSince < 0 || iter <= splitSince) {
+		splitSince = splitSince < 0 ? iter : splitSince;
+		return;
+	}
+	if (syncedAt == iter - 1) return;
+	throw std::runtime_error("RbsmTimeStepper: this scene is split by yade.mpy, but yade_rbsm's sync engine did not run in step "
+	                         + std::to_string(iter - 1) + " (taken out of O.engines?): every rank would choose its own O.dt and the ranks "
+	                           "would drift apart. Build the engines with yade_rbsm.engines(mpi=True), or run with yade_rbsm.mpi.mpirun, which adds it.");
+}
+
 // A refusal still kept at the next step: no sync engine took it, and the step it refused has run.
 inline void throwUnclaimedRefusal(std::string& kept)
 {

@@ -643,6 +643,7 @@ void RbsmTimeStepper::action()
 	bool       split       = scene->subdomain > 0;
 	if (!checkBlocks(watchLater, travelDt, runCollider, split)) return;
 	requireSyncEngine(split, deferErrors);
+	if (split) requireSyncEachStep(scene->iter, splitSince, syncedAt);
 	updateBounds(made);
 	if (watchLater)
 		for (const auto& b : bodies) {

@@ -96,6 +96,10 @@ def sync():
     ts = _stepper(O.engines)
     err = ts.error if ts is not None else ""
     mp = _mpy()
+    if ts is not None:
+        ts.syncedAt = O.iter  # (the stepper of a split scene checks that this ran in every step)
+        if mp is not None:
+            _check_sync_place(O.engines, ts)
     if mp is None:  # serial: the stepper's own behaviour
         if err:
             ts.error = ""
@@ -123,6 +127,21 @@ def sync():
         raise RuntimeError(_refused[1])
     if math.isfinite(glob[1]) and int(glob[1]) != O.stopAtIter:
         O.stopAtIter = int(glob[1])
+
+
+def _check_sync_place(engines, ts):
+    """The sync engine between RbsmTimeStepper (whose step it shares) and NewtonIntegrator (which takes it):
+    before the stepper it shared the last step's, after Newton the ranks had already moved by their own (one
+    rank integrated at 8-11 times the others' step). Every rank has the same list: each raises the same."""
+    names = [(getattr(e, "label", ""), type(e).__name__) for e in engines]
+    here = next(i for i, (label, _) in enumerate(names) if label == SYNC_LABEL)
+    stepper = engines.index(ts)
+    newton = next((i for i, (_, kind) in enumerate(names) if kind == "NewtonIntegrator"), len(engines))
+    if not stepper < here < newton:
+        raise RuntimeError("yade_rbsm.mpi: the sync engine (label %r) is at place %d of O.engines, but must come right "
+                           "after RbsmTimeStepper (place %d) and before NewtonIntegrator (place %d): the ranks would not "
+                           "share one O.dt. Build the engines with yade_rbsm.engines(mpi=True) (or yade_rbsm.mpi.with_sync)"
+                           % (SYNC_LABEL, here, stepper, newton))
 
 
 def _abort_if_ended_early():

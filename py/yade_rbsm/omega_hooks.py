@@ -62,6 +62,10 @@ def install():
     load = yade.wrapper.Omega.load
 
     def load_naming_the_format(self, file, quiet=False):
+        if isinstance(file, str) and not file.startswith(":memory:") and os.path.isfile(file):
+            damaged = _unreadable(file)  # (YADE's reader can crash on a damaged gzip stream: checked first)
+            if damaged:
+                raise RuntimeError(damaged)
         try:
             return load(self, file, quiet)
         except RuntimeError as e:
@@ -71,6 +75,31 @@ def install():
             raise RuntimeError(why) from e
     load_naming_the_format.__doc__ = load.__doc__
     yade.wrapper.Omega.load = load_naming_the_format
+
+
+def _unreadable(path):
+    """Why *path* cannot be a whole scene file, found without YADE (which may crash on it), or None: empty, a
+    gzip stream that fails its CRC or ends early, an XML archive without its end."""
+    import gzip
+    import zlib
+    if os.path.getsize(path) == 0:
+        return "O.load(%r): the file is empty" % path
+    with open(path, "rb") as f:
+        head = f.read(2)
+        if head != b"\x1f\x8b":
+            f.seek(max(0, os.path.getsize(path) - 200))
+            tail = f.read()
+            f.seek(0)
+            if f.read(5) == b"<?xml" and b"</boost_serialization>" not in tail:
+                return "O.load(%r): the XML ends before the scene does (a truncated copy?)" % path
+            return None
+    try:
+        with gzip.open(path, "rb") as g:
+            while g.read(1 << 20):
+                pass
+    except (OSError, EOFError, zlib.error) as e:
+        return "O.load(%r): a damaged or truncated gzip file (%s)" % (path, e)
+    return None
 
 
 def _damaged(path, error):

@@ -109,3 +109,17 @@ def test_a_distributed_run_without_the_sync_engine_is_refused():
     assert "without yade_rbsm's sync engine" in r.output and "engines(mpi=True)" in r.output, r.tail()
     assert r.wall < 30
 
+
+
+def test_a_distributed_run_with_the_sync_engine_taken_out_or_misplaced_is_refused():
+    """Issue 34's closing pass: with the sync engine of engines(mpi=True) taken out, or placed before
+    RbsmTimeStepper or after NewtonIntegrator, YADE's mpy.mpirun drifted silently (ranks ending at O.time 0.0003,
+    0.039 and 0.048 s; or one rank integrating at 8-11 times the others' step). Each is now refused on every rank
+    with what is wrong and the fix, and the job ends."""
+    for case, said in (("sync_removed", "sync engine did not run"), ("sync_first", "after RbsmTimeStepper"),
+                       ("sync_last", "before NewtonIntegrator")):
+        r = _mpi({"case": case}, timeout=TIMEOUT)
+        print(case, r.returncode, [l for l in r.output.splitlines() if "sync" in l][:3])
+        assert r.returncode != 0, (case, r.tail())
+        assert said in r.output and "engines(mpi=True)" in r.output, (case, r.tail())
+        assert r.wall < 30

@@ -12,6 +12,8 @@ argv[1]: JSON {"mode": "serial" | "mpi" | "spawn", "case":
   "before": a value refused on rank 1 only before the run (RbsmTimeStepper.safetyFactor = 5: ValueError),
   "nosync": the engines built as before yade.mpy was imported (engines(mpi=False): no sync engine), plain
             mpy.mpirun: each rank would choose its own O.dt,
+  "sync_removed", "sync_first", "sync_last": engines(mpi=True) with the sync engine taken out, moved before
+            RbsmTimeStepper or after NewtonIntegrator, plain mpy.mpirun (issue 34's closing pass: all drifted),
  "steps": 100, "runner": "mpy" (mpy.mpirun) | "rbsm" (yade_rbsm.mpi.mpirun)}.
 Every rank that gets to the end prints its result: rank, O.iter, O.time, the exception of the run (if
 any, first 600 characters) and the wall time of the run.
@@ -56,6 +58,10 @@ for i in range(N):
     O.bodies.append(b)
 O.engines = engines(contact_damping=0.3, mpi=False if case == "nosync" else None)
 O.dt = 1e-4
+if case in ("sync_removed", "sync_first", "sync_last") and mpi:
+    sync = [e for e in O.engines if getattr(e, "label", "") == "rbsmMpiSync"][0]
+    rest = [e for e in O.engines if e is not sync]
+    O.engines = rest if case == "sync_removed" else ([sync] + rest if case == "sync_first" else rest + [sync])
 if case == "refuse":
     O.engines[3].setDt = False
     O.dt = p.get("dt", 5e-4)
@@ -81,6 +87,6 @@ try:
         mp.mpirun(p.get("steps", 100))
 except Exception as e:  # noqa: BLE001 - the test reads the message
     exc = str(e)[:600]
-    if case == "nosync":
+    if case in ("nosync", "sync_removed", "sync_first", "sync_last"):
         raise  # as in a user's script: the error ends the script on this rank
 emit({"rank": mp.rank if mpi else 0, "iter": O.iter, "time": O.time, "exc": exc, "wall": time.time() - t0})
