@@ -3,6 +3,7 @@
 #include <core/Dispatching.hpp>
 #include <pkg/rbsm/RbsmGeom.hpp>
 #include <pkg/rbsm/RbsmPhys.hpp>
+#include <pkg/rbsm/kernel/Hydrostatic.hpp>
 
 namespace yade {
 
@@ -16,12 +17,7 @@ public:
 	{
 		if (!(std::isfinite(dampingRatio) && dampingRatio >= 0))
 			throw std::invalid_argument("Law2_RbsmGeom_RbsmPhys_MohrCoulomb.dampingRatio: must be a finite number >= 0 (got " + std::to_string(dampingRatio) + ")");
-		if (!(std::isfinite(waterUnitWeight) && waterUnitWeight >= 0))
-			throw std::invalid_argument("Law2_RbsmGeom_RbsmPhys_MohrCoulomb.waterUnitWeight: must be a finite number >= 0 (got " + std::to_string(waterUnitWeight) + ")");
-		for (std::size_t i = 0; i < phreatic.size(); ++i)
-			if (!(std::isfinite(phreatic[i].x()) && std::isfinite(phreatic[i].y())) || (i > 0 && !(phreatic[i].x() > phreatic[i - 1].x())))
-				throw std::invalid_argument("Law2_RbsmGeom_RbsmPhys_MohrCoulomb.phreatic: point " + std::to_string(i)
-				                            + " is not finite or its x does not increase (a polyline of strictly increasing x)");
+		rbsm::checkWaterTable("Law2_RbsmGeom_RbsmPhys_MohrCoulomb", phreatic, waterUnitWeight);
 	}
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_RbsmGeom_RbsmPhys_MohrCoulomb, LawFunctor,

@@ -7,22 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
-#include <string>
 
 namespace yade {
 
 YADE_PLUGIN((OpenWaterPressure));
 
-void OpenWaterPressure::postLoad(OpenWaterPressure&)
-{
-	if (!(std::isfinite(waterUnitWeight) && waterUnitWeight >= 0))
-		throw std::invalid_argument("OpenWaterPressure.waterUnitWeight: must be a finite number >= 0 (got " + std::to_string(waterUnitWeight) + ")");
-	for (std::size_t i = 0; i < phreatic.size(); ++i)
-		if (!(std::isfinite(phreatic[i].x()) && std::isfinite(phreatic[i].y())) || (i > 0 && !(phreatic[i].x() > phreatic[i - 1].x())))
-			throw std::invalid_argument("OpenWaterPressure.phreatic: point " + std::to_string(i)
-			                            + " is not finite or its x does not increase (a polyline of strictly increasing x)");
-}
+void OpenWaterPressure::postLoad(OpenWaterPressure&) { rbsm::checkWaterTable("OpenWaterPressure", phreatic, waterUnitWeight); }
 
 void OpenWaterPressure::action()
 {

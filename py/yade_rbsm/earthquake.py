@@ -14,6 +14,7 @@ Newmark (1965): a rigid block on a plane of dip ψ with friction φ, under a hor
 out of the face, slides down the plane while a > a_y = g tan(φ − ψ) (the yield acceleration, kh at FS = 1), with
 s̈ = (a − a_y) cos(φ − ψ)/cos φ, until its sliding velocity is zero again (:func:`newmark`).
 """
+import bisect
 import csv
 import json
 import math
@@ -77,45 +78,35 @@ class Record:
         import os
         return cls.from_csv(os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "synthetic_record.csv"))
 
+    def _sample_before(self, time):
+        """The index lo of the samples t[lo] <= time < t[lo + 1] (t[0] < time < t[-1])."""
+        return bisect.bisect_right(self.t, time) - 1
+
     def at(self, time):
         """The ground acceleration at *time* [m/s²] (linear between samples, 0 outside the record)."""
         t = self.t
         if time <= t[0] or time >= t[-1]:
             return 0.0
-        lo, hi = 0, len(t) - 1
-        while hi - lo > 1:
-            mid = (lo + hi) // 2
-            if t[mid] <= time:
-                lo = mid
-            else:
-                hi = mid
-        w = (time - t[lo]) / (t[hi] - t[lo])
-        return self.a[lo] + w * (self.a[hi] - self.a[lo])
+        lo = self._sample_before(time)
+        w = (time - t[lo]) / (t[lo + 1] - t[lo])
+        return self.a[lo] + w * (self.a[lo + 1] - self.a[lo])
 
     def velocity(self, time):
-        """The ground velocity at *time* [m/s]: the acceleration integrated from the record's start (exactly, for
-        the linear interpolation of :meth:`at`); constant after the record's end (a record not corrected for its
+        """The ground velocity at *time* [m/s]: the acceleration of :meth:`at` integrated exactly from the record's
+        start (a nonzero first sample is a step there); constant after its end (a record not corrected for its
         baseline leaves the ground moving)."""
         t, a = self.t, self.a
-        if not hasattr(self, "_v"):
+        if not hasattr(self, "_v"):  # the velocity at each sample, by the trapezoid rule (exact: a is linear)
             self._v = [0.0]
             for i in range(1, len(t)):
                 self._v.append(self._v[-1] + 0.5 * (a[i - 1] + a[i]) * (t[i] - t[i - 1]))
-            # a nonzero first sample is a step at t[0] (at() is 0 before it): from 0, as at() integrates
         if time <= t[0]:
             return 0.0
         if time >= t[-1]:
             return self._v[-1]
-        lo, hi = 0, len(t) - 1
-        while hi - lo > 1:
-            mid = (lo + hi) // 2
-            if t[mid] <= time:
-                lo = mid
-            else:
-                hi = mid
+        lo = self._sample_before(time)
         h = time - t[lo]
-        slope = (a[hi] - a[lo]) / (t[hi] - t[lo])
-        return self._v[lo] + a[lo] * h + 0.5 * slope * h * h
+        return self._v[lo] + a[lo] * h + 0.5 * (a[lo + 1] - a[lo]) / (t[lo + 1] - t[lo]) * h * h
 
     @property
     def duration(self):

@@ -103,3 +103,18 @@ TEST(Hydrostatic, SlopingWaterTableFollowsItsVertices)
 	}
 	EXPECT_NEAR(load.force.y(), bottom - top, 1e-6 * g);
 }
+
+TEST(Hydrostatic, WaterTableCheckNamesTheProblem)
+{
+	EXPECT_NO_THROW(rbsm::checkWaterTable("W", level(1), g));
+	for (const auto& bad : { std::vector<Vec2> { Vec2(0, 0), Vec2(0, 1) }, std::vector<Vec2> { Vec2(0, 0), Vec2(NAN, 1) } }) {
+		try {
+			rbsm::checkWaterTable("W", bad, g);
+			ADD_FAILURE() << "accepted";
+		} catch (const std::invalid_argument& e) {
+			EXPECT_NE(std::string(e.what()).find("W.phreatic: point 1"), std::string::npos) << e.what();
+		}
+	}
+	EXPECT_THROW(rbsm::checkWaterTable("W", level(1), -1), std::invalid_argument);
+	EXPECT_THROW(rbsm::checkWaterTable("W", level(1), INFINITY), std::invalid_argument);
+}

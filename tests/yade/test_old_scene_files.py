@@ -20,7 +20,7 @@ report(binary=save_format.recorded("scene.yade.gz"), now=save_format.fields())
 LOAD = r"""
 import yade_rbsm
 out = {}
-for f in ("old_recorded.xml", "old_unrecorded.xml", "scene.xml", "scene.yade.gz"):
+for f in FILES:
     try:
         O.load(f)
         out[f] = "loaded %d" % len(O.bodies)
@@ -54,25 +54,13 @@ def test_old_files_are_refused_naming_fields_and_commit(tmp_path):
     xml = open(str(tmp_path / "scene.xml")).read()
     (tmp_path / "old_recorded.xml").write_text(older(xml, True))
     (tmp_path / "old_unrecorded.xml").write_text(older(xml, False))
-    (r,) = run_ok(LOAD, workdir=str(tmp_path))
+    (r,) = run_ok("FILES = %r\n" % ["old_recorded.xml", "old_unrecorded.xml", "scene.xml", "scene.yade.gz"] + LOAD,
+                  workdir=str(tmp_path))
     assert "saved by yade-rbsm 0a1b2c3" in r["old_recorded.xml"] and "RbsmPhys lacks waterForce (added since)" in \
         r["old_recorded.xml"] and "git checkout 0a1b2c3" in r["old_recorded.xml"], r
     assert "older than its format record" in r["old_unrecorded.xml"] and "RbsmPhys lacks waterForce" in \
         r["old_unrecorded.xml"], r
     assert r["scene.xml"] == "loaded 2" and r["scene.yade.gz"] == "loaded 2", r
-
-
-DAMAGED = r"""
-import yade_rbsm
-out = {}
-for f in FILES:
-    try:
-        O.load(f)
-        out[f] = "loaded %d" % len(O.bodies)
-    except RuntimeError as e:
-        out[f] = str(e)
-report(**out)
-"""
 
 
 def test_damaged_files_are_refused_naming_the_file_and_why(tmp_path):
@@ -90,7 +78,7 @@ def test_damaged_files_are_refused_naming_the_file_and_why(tmp_path):
     (tmp_path / "flipped.yade.gz").write_bytes(bytes(flipped))
     (tmp_path / "renamed.xml").write_text(xml.replace("yade::RbsmMat", "yade::RbsmMatX"))
     files = ["empty.xml", "truncated.xml", "notes.xml", "flipped.yade.gz", "renamed.xml"]
-    (r,) = run_ok("FILES = %r\n" % files + DAMAGED, workdir=str(tmp_path))
+    (r,) = run_ok("FILES = %r\n" % files + LOAD, workdir=str(tmp_path))
     for f in files:
         print(f, "->", r[f])
         assert f in r[f], r  # the file is named

@@ -1,6 +1,8 @@
 #include <pkg/rbsm/kernel/Hydrostatic.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
 namespace rbsm {
 
@@ -10,6 +12,16 @@ Real phreaticHeight(const std::vector<Vec2>& line, Real x)
 	for (std::size_t i = 1; i < line.size(); ++i)
 		if (x <= line[i].x()) return line[i - 1].y() + (line[i].y() - line[i - 1].y()) * (x - line[i - 1].x()) / (line[i].x() - line[i - 1].x());
 	return line.back().y();
+}
+
+void checkWaterTable(const std::string& who, const std::vector<Vec2>& line, Real gammaW)
+{
+	if (!(std::isfinite(gammaW) && gammaW >= 0))
+		throw std::invalid_argument(who + ".waterUnitWeight: must be a finite number >= 0 (got " + std::to_string(gammaW) + ")");
+	for (std::size_t i = 0; i < line.size(); ++i)
+		if (!(std::isfinite(line[i].x()) && std::isfinite(line[i].y())) || (i > 0 && !(line[i].x() > line[i - 1].x())))
+			throw std::invalid_argument(who + ".phreatic: point " + std::to_string(i)
+			                            + " is not finite or its x does not increase (a polyline of strictly increasing x)");
 }
 
 namespace {

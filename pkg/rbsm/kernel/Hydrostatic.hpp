@@ -4,12 +4,17 @@
 
 #include <pkg/rbsm/kernel/Types.hpp>
 
+#include <string>
 #include <vector>
 
 namespace rbsm {
 
 /// The height of the phreatic polyline (x strictly increasing) at x, level beyond its ends.
 Real phreaticHeight(const std::vector<Vec2>& line, Real x);
+
+/// Throws std::invalid_argument naming `who` (e.g. "OpenWaterPressure") unless γw is finite and >= 0 and the water
+/// table's points are finite with strictly increasing x.
+void checkWaterTable(const std::string& who, const std::vector<Vec2>& line, Real gammaW);
 
 struct WaterLoad {
 	Vec2 force  = Vec2::Zero(); ///< Σ of −u n ds (n the outward normal) [N per unit thickness]
