@@ -155,16 +155,21 @@ def apply(record, direction=1, start=None, base="rigid", impedance=None, base_id
     if base == "rigid" and (impedance is not None or base_ids is not None):
         raise ValueError("earthquake: impedance and base_ids are for base='compliant'")
     start = O.time if start is None else number("earthquake", "start", start)
-    quiet = None
-    if record is not None and base == "compliant":
-        if mpi.distributed():
-            raise ValueError("earthquake: a compliant base is not available under yade.mpy yet (its base blocks' "
-                             "forces are set from Python on one rank): use base='rigid' or run serially")
-        quiet = quiet_base.describe(O, quiet_base.base_blocks(O, base_ids), impedance)
+    if record is not None and base == "compliant" and mpi.distributed():
+        raise ValueError("earthquake: a compliant base is not available under yade.mpy yet (its base blocks' forces are "
+                         "set from Python on one rank): use base='rigid' or run serially")
     # (checked first: a refused record leaves the one shaking the scene in place)
+    previous = json.loads(O.tags[TAG]).get("base") if shaking(O) else None
+    if previous:  # a compliant base fixed again where it stands, as before it was let go (also to be let go again)
+        quiet_base.hold(O, previous)
+    try:
+        quiet = quiet_base.describe(O, quiet_base.base_blocks(O, base_ids), impedance) \
+            if record is not None and base == "compliant" else None
+    except ValueError:
+        if previous:  # refused: the compliant base shaking the scene goes on
+            quiet_base.let_go(O, previous)
+        raise
     O.engines = [e for e in O.engines if getattr(e, "label", "") != LABEL]
-    if shaking(O) and json.loads(O.tags[TAG]).get("base"):
-        quiet_base.hold(O, json.loads(O.tags[TAG])["base"])
     g0 = slope_scene.static_gravity()
     omega.newton(O).gravity = tuple(g0)
     if record is None:

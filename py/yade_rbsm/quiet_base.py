@@ -130,8 +130,9 @@ def static_reaction(O, base, gravity):
 
 
 def apply_tractions(O, base, v_ground):
-    """Adds each base block's static reaction and the dashpots' traction on its faces looking down (two Gauss
-    points a face, so that the block's rotation is damped as the faces' points move); returns their power [W]."""
+    """Adds each base block's static reaction and the dashpots' traction on its faces looking down (at two Gauss
+    points a face, with the torque they make: a base whose rotation a script frees is damped too); returns their
+    power [W]."""
     g = 1 / math.sqrt(3)
     power = 0.0
     for d, (fx, fy, tz) in zip(base["blocks"], base["reaction"]):
