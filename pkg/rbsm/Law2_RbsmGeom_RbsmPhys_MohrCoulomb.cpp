@@ -373,8 +373,7 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 		const bool wet = p.water || waterAll;
 		// in open water the faces' pressure is OpenWaterPressure's: a wet joint's faces are in it, a closed dry
 		// contact's are taken off (once it opens, the water is in it)
-		const bool closed = g.separation <= 1e-9 * (g.h1 + g.h2);
-		if (openWater) p.waterForce = wet || !closed ? 0 : addWater<Strain>(g, j, phreatic, waterUnitWeight, -1, n, sum, waterWork);
+		if (openWater) p.waterForce = wet || g.separation > 1e-9 * (g.h1 + g.h2) ? 0 : addWater<Strain>(g, j, phreatic, waterUnitWeight, -1, n, sum, waterWork);
 		else if (wet) p.waterForce = addWater<Strain>(g, j, phreatic, waterUnitWeight, 1, n, sum, waterWork);
 		else if (p.waterForce != 0) p.waterForce = 0;
 	} else if (p.waterForce != 0) p.waterForce = 0; // the water was taken away

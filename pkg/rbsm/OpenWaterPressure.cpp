@@ -34,17 +34,17 @@ void OpenWaterPressure::action()
 			world.push_back(pose.apply(v));
 			lowest = std::min(lowest, world.back().y());
 		}
-		if (lowest >= top) continue;
-		const Vector2r         c    = b->state->pos.head<2>();
-		const rbsm::WaterLoad  load = rbsm::hydrostaticLoad(world, phreatic, waterUnitWeight, c);
-		const Real             t    = poly->thickness;
-		const Vector3r         f(load.force.x() * t, load.force.y() * t, 0);
-		scene->forces.addForce(b->id, f);
-		scene->forces.addTorque(b->id, Vector3r(0, 0, load.moment * t));
+		// (a block above the water takes none, but its last step's work from the load it left with still counts)
+		const rbsm::WaterLoad load = lowest < top ? rbsm::hydrostaticLoad(world, phreatic, waterUnitWeight, b->state->pos.head<2>()) : rbsm::WaterLoad {};
+		const Real            t    = poly->thickness;
+		const Vector3r        now(load.force.x() * t, load.force.y() * t, load.moment * t);
+		if (lowest < top) {
+			scene->forces.addForce(b->id, Vector3r(now.x(), now.y(), 0));
+			scene->forces.addTorque(b->id, Vector3r(0, 0, now.z()));
+		}
 		if (scene->trackEnergy) {
 			// the last step's work: its move (velocity × dt) by the mean of the loads at its ends (second order:
 			// the load at one end alone left 3 % of a floating block's heave energy after three cycles)
-			const Vector3r now(f.x(), f.y(), load.moment * t);
 			Vector3r&      last = lastLoad[size_t(b->id)];
 			const Vector3r mean = std::isnan(last.x()) ? now : Vector3r(0.5 * (last + now));
 			work += (mean.x() * b->state->vel.x() + mean.y() * b->state->vel.y() + mean.z() * b->state->angVel.z()) * scene->dt;
