@@ -13,9 +13,9 @@ __all__ = ["ContactFS", "contact_fs", "contact_fs_circle"]
 @dataclass
 class ContactFS:
     fs: float
-    normal: float  # kN
-    shear: float  # kN (driving, positive downslope)
-    resisting: float  # kN
+    normal: float  # kN/m (per metre of the blocks' thickness, as limit equilibrium's slices)
+    shear: float  # kN/m (driving, positive downslope)
+    resisting: float  # kN/m
     n_joints: int
     length: float  # m of slip surface covered by joints
     ids: list  # (id1, id2) of the joints used
@@ -24,7 +24,7 @@ class ContactFS:
         return (label, self.shear, self.normal, self.fs)
 
     def __repr__(self):
-        return "ContactFS(fs=%.4g, shear %.4g kN, normal %.4g kN, resisting %.4g kN, %d joints over %.3g m)" % (
+        return "ContactFS(fs=%.4g, shear %.4g kN/m, normal %.4g kN/m, resisting %.4g kN/m, %d joints over %.3g m)" % (
             self.fs, self.shear, self.normal, self.resisting, self.n_joints, self.length)
 
 
@@ -63,8 +63,9 @@ def contact_fs(surface, tol=None, O=None, allow_empty=False):
         L += g.length
         used.append((I.id1, I.id2))
     if not used and not allow_empty:
-        raise ValueError("contact_fs: the slip surface %s misses the slope: no joint lies on it within tol = %g m "
-                         "with its blocks on opposite sides" % (_short(poly), tol))
+        raise ValueError("contact_fs: no joint lies on the slip surface %s within tol = %g m with its blocks on "
+                         "opposite sides: it misses the slope, or crosses blocks (the blocks' stresses read any "
+                         "surface: SlopeModel.stress_fs, limit_equilibrium.stress_polyline)" % (_short(poly), tol))
     fs = R / abs(T) if T != 0 else float("inf")
     return ContactFS(fs, N / 1e3, T / 1e3, R / 1e3, len(used), L, used)
 
@@ -86,7 +87,8 @@ def _check_circle(circle):
 
 
 def _joint_terms(I, upper_is_2, d):
-    """(T, N, R) of one joint: driving shear on the upper block along d, normal, strength."""
+    """(T, N, R) of one joint per metre of its thickness: driving shear on the upper block along d, normal,
+    strength (a slope built 2 m thick carries twice the force of the same slope per metre)."""
     g, ph = I.geom, I.phys
     t = (g.tangent[0], g.tangent[1])
     sgn = 1.0 if upper_is_2 else -1.0
@@ -95,7 +97,7 @@ def _joint_terms(I, upper_is_2, d):
     w = list(g.weights)
     R = sum(ph.cohesion * wk * g.length * g.thickness for wk, ok in zip(w, list(ph.intactPoints)) if ok)
     R += ph.normalForce * ph.tanPhi
-    return T, ph.normalForce, R
+    return T / g.thickness, ph.normalForce / g.thickness, R / g.thickness
 
 
 def contact_fs_circle(circle, band=None, O=None):

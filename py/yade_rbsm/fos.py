@@ -14,8 +14,9 @@ What it runs, from the current (settled) state, which it leaves as it found it:
    strength, then the state restored) and the factor of safety from the contact forces along it at the
    current strengths (:func:`yade_rbsm.safety.slip_surface_fs`).
 3. For a continuum cut into blocks, with the builder's blocks (*sb*, a SlopeBlocks): **Bishop's critical
-   circle** of limit equilibrium on the same ground with the blocks' material (for jointed rock that
-   material is the intact rock's, and the circle means nothing: not run unless asked).
+   circle** of limit equilibrium on the same ground with the blocks' material, and the **stress-based
+   critical circle** (Kulhawy's method on the settled blocks' own stresses, :func:`yade_rbsm.safety.stress_field`)
+   (for jointed rock that material is the intact rock's, and the circles mean nothing: not run unless asked).
 
 The design value depends on the kind of slope: a **jointed rock** slope (bricks, columns, joint sets:
 the joints are the rock mass's) is what rigid blocks model: strength reduction. A **continuum cut into
@@ -168,6 +169,8 @@ def fos(sb=None, kind=None, d_fail=None, max_steps=None, patience=4, tol=1e-4, r
         return strength_reduction(start=start, grow=1.25, rtol=rtol, tol=tol, d_fail=d_fail, max_steps=max_steps,
                                   check=check, damping=0.7, density_scaling=density_scaling, patience=patience,
                                   verbose=verbose, reference_rotation=reference_rotation)
+    # the blocks' stresses are read in the state given (strength reduction leaves it as it found it)
+    stress_based = _stress_circle(sb, ids, size) if circle and sb is not None else None
     sr, halved = reduce(1.0, d_fail), 0
     # A stable end that moved more than half of d_fail and stopped (a jointed slope that slides, then jams) makes
     # the FS d_fail's; halving d_fail homes in on the onset of sliding (the landslide example: 0.872, 0.859,
@@ -189,6 +192,7 @@ def fos(sb=None, kind=None, d_fail=None, max_steps=None, patience=4, tol=1e-4, r
         estimates["contact forces, surface of slipping joints"] = _found_surface(sr, sb)
     if circle and sb is not None:
         estimates["Bishop, critical circle (blocks' material)"] = _bishop(sb, ids)
+        estimates["stress-based, critical circle (blocks' stresses)"] = stress_based
     fs, method = sr.fs, "strength reduction"
     if kind == JOINTED:
         recommendation = ("For jointed rock the joints are the rock mass's discontinuities and rigid blocks model "
@@ -199,7 +203,8 @@ def fos(sb=None, kind=None, d_fail=None, max_steps=None, patience=4, tol=1e-4, r
                           "their faces: +65 to +94 % on Griffiths & Lane's slope, docs/slope_factor_of_safety.md); ")
         if b is not None:
             fs, method = b, "Bishop, critical circle (blocks' material)"
-            recommendation += "the design value is limit equilibrium's, strength reduction's is shown beside it."
+            recommendation += ("the design value is limit equilibrium's; strength reduction's and the blocks' own "
+                               "stresses on their critical circle are shown beside it.")
             if sr.warnings:  # they qualify the estimate beside the design value, not the design value
                 estimates["strength reduction"]["note"] += "; " + "; ".join(sr.warnings)
                 warnings = [w for w in warnings if w not in sr.warnings]
@@ -235,25 +240,45 @@ def _found_surface(sr, sb):
         r = slip_surface_fs(surface)
     except ValueError as e:
         return dict(fs=None, note=str(e))
-    return dict(fs=r.contact.fs, note="%d joints, %.3g m, found at F = %.4f, forces of the current state" % (
-        len(surface.joints), surface.length, sr.hi))
+    return dict(fs=r.contact.fs, note="%s, %.3g m, found at F = %.4f, forces of the current state" % (
+        r.note(), surface.length, sr.hi))
+
+
+def _search(sb, mat, **kw):
+    """The critical circle of limit equilibrium on the blocks' ground with their material (keywords: method's)."""
+    from . import limit_equilibrium as le
+    from .safety import le_slope
+    slope = le_slope(sb.surface, mat)
+    xs = [p[0] for p in sb.surface]
+    ys = [p[1] for p in sb.surface]
+    H = max(ys) - sb.base
+    # the grid of scripts/reference_slopes.py's searches, scaled: within 0.3 % of their minima on its four
+    # slopes (0.8 s), where 9 x 9 x 9 centres and radii, refined once, stayed 1.2 to 2.5 % above them
+    return le.critical_circle(slope, x_range=(min(xs), max(xs)), y_range=(max(ys), max(ys) + 3 * H), nx=12, ny=12,
+                              r_range=(0.3 * H, 5 * H), nr=19, base=sb.base, refine=3, **kw)
 
 
 def _bishop(sb, ids):
     from yade import O
-    from . import limit_equilibrium as le
-    from .safety import le_slope
     mat = O.bodies[ids[0]].material
     try:
-        slope = le_slope(sb.surface, mat)
-        xs = [p[0] for p in sb.surface]
-        ys = [p[1] for p in sb.surface]
-        H = max(ys) - sb.base
-        # the grid of scripts/reference_slopes.py's searches, scaled: within 0.3 % of their minima on its four
-        # slopes (0.8 s), where 9 x 9 x 9 centres and radii, refined once, stayed 1.2 to 2.5 % above them
-        r = le.critical_circle(slope, x_range=(min(xs), max(xs)), y_range=(max(ys), max(ys) + 3 * H), nx=12, ny=12,
-                               r_range=(0.3 * H, 5 * H), nr=19, method="bishop", base=sb.base, refine=3)
+        r = _search(sb, mat, method="bishop")
     except ValueError as e:
         return dict(fs=None, note=str(e))
     return dict(fs=r.fs, note="c %.3g kPa, phi %.1f deg of the blocks' material, %s%s" % (
+        mat.cohesion / 1e3, math.degrees(mat.frictionAngle), r.circle, "".join("; WARNING: " + w for w in r.warnings)))
+
+
+def _stress_circle(sb, ids, size):
+    """Kulhawy's critical circle on the blocks' own stresses (safety.stress_field): the state the joints carry,
+    read on surfaces that cross the blocks; circles at least two blocks deep (a shallower one samples a block
+    or two of the face)."""
+    from yade import O
+    from .safety import stress_field
+    mat = O.bodies[ids[0]].material
+    try:
+        r = _search(sb, mat, method="stress", stress=stress_field(), min_depth=2 * size)
+    except ValueError as e:
+        return dict(fs=None, note=str(e))
+    return dict(fs=r.fs, note="Kulhawy's method on the settled blocks' stresses, c %.3g kPa, phi %.1f deg, %s%s" % (
         mat.cohesion / 1e3, math.degrees(mat.frictionAngle), r.circle, "".join("; WARNING: " + w for w in r.warnings)))

@@ -318,14 +318,53 @@ class SlopeModel:
 
     def contact_fs(self, polyline, name="slip polyline"):
         """FS from the joint forces along *polyline* (:func:`safety.contact_fs`: the joints on it, shear
-        strength over shear force); recorded as "RBSM contact forces, *name*". Returns the ContactFS."""
+        strength over shear force); recorded as "RBSM contact forces, *name*". Returns the ContactFS. The
+        row says how much of the polyline's length inside the slope the joints cover: a polyline that
+        crosses blocks is read only where it runs along joints (:meth:`stress_fs` reads it everywhere)."""
         from .safety import contact_fs
         w0 = time.time()
         r = contact_fs(polyline)
+        inside = length_inside(polyline, self.sb.surface, self.sb.base) if self.sb is not None else 0.0
+        cover = r.length / inside if inside > 0 else float("nan")
+        note = "T = %.1f kN/m, N = %.1f kN/m, %d joints" % (r.shear, r.normal, r.n_joints)
+        if cover < 0.8:  # (the rest crosses blocks, whose strength is not in this FS; a plane of bricks: 89 %)
+            note += "; they cover %.0f %% of its %.3g m in the slope (the rest crosses blocks: see stress_fs)" % (
+                100 * cover, inside)
         self._record("contact forces", dict(name=name), dict(fs=r.fs, shear=r.shear, normal=r.normal, joints=r.n_joints,
-                                                              length=r.length), w0,
-                     [["RBSM contact forces, " + name, r.fs, "T = %.1f kN/m, N = %.1f kN/m, %d joints"
-                       % (r.shear, r.normal, r.n_joints)]])
+                                                              length=r.length, cover=cover), w0,
+                     [["RBSM contact forces, " + name, r.fs, note]])
+        return r
+
+    def stress_fs(self, polyline=None, circle=None, name=None, n=50):
+        """FS along any *polyline* ``[(x, y), ...]`` or *circle* (xc, yc, R), through blocks or along joints:
+        Kulhawy's stress-based factor of safety from the blocks' own stresses (:func:`safety.stress_field`,
+        Love-Weber from their joint forces, linear between the blocks' centroids), the strength along the
+        surface the blocks' material's (c + sigma_n tan phi, limit equilibrium's slices of the same ground).
+        For a continuum cut into blocks this reads the state the joints carry where a slip surface crosses
+        the blocks; the surface's ends may lie on or above the ground. Recorded as "RBSM block stresses, *name*";
+        returns the limit_equilibrium.Result (``fs``, ``normal``, ``shear`` in kN/m)."""
+        from . import limit_equilibrium as le
+        from .safety import le_slope, stress_field
+        if (polyline is None) == (circle is None):
+            raise ValueError("SlopeModel.stress_fs: give one of polyline= or circle= (got %s)"
+                             % ("both" if polyline is not None else "neither"))
+        if self.sb is None or self.material is None:
+            raise ValueError("SlopeModel.stress_fs: the model has no blocks yet (build() first)")
+        w0 = time.time()
+        kh, kv = _pseudo_static()
+        soil = le_slope(self.sb.surface, self.material, kh=kh, kv=kv)
+        field = stress_field()
+        if circle is not None:
+            r = le.stress_circle(soil, circle, field, n)
+            name = name or "circle"
+        else:
+            r = le.stress_polyline(soil, polyline, field, n)
+            name = name or "polyline"
+        note = "T = %.1f kN/m, N = %.1f kN/m, c %.3g kPa, phi %.1f deg of the blocks' material" % (
+            r.shear, r.normal, soil.layers[0].c, soil.layers[0].phi)
+        self._record("block stresses", dict(name=name, circle=list(circle) if circle is not None else None,
+                                            polyline=[list(p) for p in polyline] if polyline is not None else None),
+                     dict(fs=r.fs, shear=r.shear, normal=r.normal), w0, [["RBSM block stresses, " + name, r.fs, note]])
         return r
 
     def limit_equilibrium(self, polyline=None, circle=None, toe=None, search=None, n=50, g=9.81, c=None, phi=None):
@@ -363,8 +402,8 @@ class SlopeModel:
         if ss is not None:
             found = slip_surface_fs(ss, slope=le_slope(self.sb.surface, self.material))
             fel = found.fellenius
-            rows = [["RBSM contact forces, found surface", found.contact.fs, "T = %.1f kN/m, N = %.1f kN/m, %d joints" % (
-                found.contact.shear, found.contact.normal, found.contact.n_joints)],
+            rows = [["RBSM contact forces, found surface", found.contact.fs, "T = %.1f kN/m, N = %.1f kN/m, %s" % (
+                found.contact.shear, found.contact.normal, found.note())],
                     ["Fellenius, found surface", None if isinstance(fel, str) else fel.fs, _le_note(fel)]]
         self._record("slipping surface", dict(steps=steps), dict(joints=len(ss.joints) if ss else 0,
                                                                   length=ss.length if ss else 0.0), w0, rows)
@@ -479,6 +518,21 @@ def _pseudo_static():
     gm = math.sqrt(sum(v * v for v in g0))
     gx, gy = omega.newton(O).gravity[0], omega.newton(O).gravity[1]
     return abs(gx) / gm, 1.0 + gy / gm
+
+
+def length_inside(polyline, ground, base):
+    """Length [m] of *polyline* between the *ground* polyline and the level *base* (inside the slope)."""
+    from .geometry import interp_y
+    total = 0.0
+    for (x0, y0), (x1, y1) in zip(polyline[:-1], polyline[1:]):
+        k = 64  # each segment sampled: a slip polyline crosses the ground once or twice
+        for j in range(k):
+            xa, ya = x0 + (x1 - x0) * j / k, y0 + (y1 - y0) * j / k
+            xb, yb = x0 + (x1 - x0) * (j + 1) / k, y0 + (y1 - y0) * (j + 1) / k
+            xm, ym = 0.5 * (xa + xb), 0.5 * (ya + yb)
+            if base <= ym <= interp_y(ground, xm):
+                total += math.hypot(xb - xa, yb - ya)
+    return total
 
 
 def _blocks(O):

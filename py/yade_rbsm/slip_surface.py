@@ -25,16 +25,17 @@ def _median_joint_length(O):
 @dataclass
 class SlipSurface:
     polyline: list  # [(x, y), ...], increasing x
-    joints: list  # (id1, id2)
-    length: float  # m, sum of the contact lengths
+    joints: list  # (id1, id2) of the joints that slipped (the surface is drawn through them)
+    length: float  # m, sum of their contact lengths
 
     def __str__(self):
-        return "slipping surface: %d joints, %.2f m, polyline %s" % (
+        return "slipping surface: %d slipping joints, %.2f m, polyline %s" % (
             len(self.joints), self.length, " ".join("(%.2f, %.2f)" % p for p in self.polyline))
 
     def __repr__(self):
         (x0, y0), (x1, y1) = self.polyline[0], self.polyline[-1]
-        return "SlipSurface(%d joints, %.3g m, from (%.3g, %.3g) to (%.3g, %.3g))" % (len(self.joints), self.length, x0, y0, x1, y1)
+        return "SlipSurface(%d slipping joints, %.3g m, from (%.3g, %.3g) to (%.3g, %.3g))" % (
+            len(self.joints), self.length, x0, y0, x1, y1)
 
 
 class SlipSurfaceFS(NamedTuple):
@@ -46,7 +47,13 @@ class SlipSurfaceFS(NamedTuple):
     def __repr__(self):
         fel = self.fellenius
         fel = ("Fellenius FS %.3f" % fel.fs) if hasattr(fel, "fs") else ("Fellenius: %s" % fel if fel else "no Fellenius")
-        return "SlipSurfaceFS(contact forces FS %.3f, %s; %r)" % (self.contact.fs, fel, self.surface)
+        return "SlipSurfaceFS(contact forces FS %.3f from the %d joints on the surface, %s; %r)" % (
+            self.contact.fs, self.contact.n_joints, fel, self.surface)
+
+    def note(self):
+        """The two counts a table row needs: the joints whose forces were read (every joint on the surface,
+        slipping or not) and the joints that slipped and drew it."""
+        return "%d joints on the surface (%d slipped and drew it)" % (self.contact.n_joints, len(self.surface.joints))
 
 
 def _segments_distance(a, b):

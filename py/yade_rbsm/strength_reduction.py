@@ -84,7 +84,7 @@ class Trial:
         ratio = ("unbalanced ratio %.2e" % self.ratio) if math.isfinite(self.ratio) else "unbalanced ratio not reached"
         mech = (", mechanism: %s (rotation x size / displacement %.2f)" % (self.mechanism, self.rocking)
                 if self.mechanism else "")
-        return ("F = %.4f: %s (%s after %d steps, %s, max displacement %.3e m, moving mass %.1f %%%s%s, "
+        return ("F = %.4f: %s (%s after %d steps, %s, max displacement %.3e m, mass moved beyond d_fail %.1f %%%s%s, "
                 "%.1f s wall)" % (self.F, "FAILED" if self.failed else "stable", self.reason, self.steps, ratio,
                                   self.dmax, 100 * self.moving, loc, mech, self.wall))
 

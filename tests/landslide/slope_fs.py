@@ -9,6 +9,8 @@
 #   stress   Kulhawy's stress-based FS from the settled blocks' stresses (safety.stress_field), ductile joints
 #   stress_kh  the same with the blocks settled under a pseudo-static kh = 0.1 out of the face (slope.set_seismic),
 #            against Bishop and Spencer with kh
+#   model_stress  SlopeModel.stress_fs (issue 37: FS along any polyline, through blocks) on Bishop's critical
+#            circle and on a polyline along it, beside contact_fs on that polyline (joints cover little of it)
 #   messages  what a user trying these tools ran into: bad calibrate arguments, strength reduction on an
 #            empty scene and on bricks (no mechanism)
 # Prints RESULT <json>.
@@ -111,6 +113,40 @@ elif what == "stress":
                undrained_stress=le.stress_circle(undrained, bishop.circle, field).fs,
                undrained_bishop=le.bishop_circle(undrained, bishop.circle).fs,
                syy=float(syy[0]), sxx=float(sxx[0]), bad_ids=bad_ids)
+elif what == "model_stress":
+    from yade_rbsm import limit_equilibrium as le
+    mat = wrapper.RbsmMat(young=100e6, poisson=0.3, density=20e3 / 9.81, frictionAngle=phi, cohesion=c,
+                          tensileStrength=c / math.tan(phi), ductile=True)
+    O.materials.append(mat)
+    sb = sl.voronoi_slope_blocks([(0, 0), (12, 0), (32, 10), (52, 10)], 0.0, spacing=1.0, seed=1, min_distance=0.5)
+    m = sl.SlopeModel(sb, mat)
+    m.build()
+    st = m.settle(tol=1e-4, density_scaling=True)
+    soil = le.Slope(sb.surface, le.Layer(c=10.0, phi=20.0, gamma=20.0))
+    bishop = le.critical_circle(soil, x_range=(5, 40), y_range=(10, 50), nx=12, ny=12, refine=3, base=0.0,
+                                r_range=(5, 60), nr=19)
+    C = bishop.circle
+    by_circle = m.stress_fs(circle=(C.xc, C.yc, C.R), name="Bishop's circle")
+    # the field is linear between block centroids 1 m apart: at 50 slices the two surfaces sample it at other points
+    fine = [m.stress_fs(circle=(C.xc, C.yc, C.R), n=800).fs]
+    # the same circle as a 41-point polyline from above the ground at its lowest x to above it at its highest
+    angles = [math.pi + (k / 40.0) * (math.pi / 2.0) for k in range(41)]  # 180 to 270 deg: the lower left quarter
+    poly = [(C.xc + C.R * math.cos(t), C.yc + C.R * math.sin(t)) for t in angles]
+    angles2 = [1.5 * math.pi + (k / 40.0) * (math.pi / 2.0) for k in range(1, 41)]  # 270 to 360 deg
+    poly += [(C.xc + C.R * math.cos(t), C.yc + C.R * math.sin(t)) for t in angles2]
+    by_polyline = m.stress_fs(polyline=poly, name="polyline on Bishop's circle")
+    fine.append(m.stress_fs(polyline=poly, n=800).fs)
+    errors = {}
+    m.contact_fs(poly, name="polyline on Bishop's circle")  # a surface through blocks: (almost) no joint on it
+    for k, kw in dict(neither={}, both=dict(circle=(C.xc, C.yc, C.R), polyline=poly)).items():
+        try:
+            m.stress_fs(**kw)
+            errors[k] = "accepted"
+        except ValueError as e:
+            errors[k] = str(e)
+    out = dict(ok=st.figures["converged"], bishop=bishop.fs, circle=by_circle.fs, polyline=by_polyline.fs,
+               fine=fine, table=m.fs_table(), errors=errors,
+               stages=[s.name for s in m.stages])
 elif what == "stress_kh":  # issue 40: the same under a pseudo-static kh = 0.1 out of the face (towards -x)
     from yade_rbsm import limit_equilibrium as le
     from yade_rbsm.safety import stress_field

@@ -1,6 +1,8 @@
 """Contact-force factor of safety against a hand calculation: a 2 m x 1 m block resting on a fixed
 block along a plane joint inclined at psi = 20 deg, phi = 30 deg, c = 0. At equilibrium the joint
-carries N = W cos(psi), T = W sin(psi) (driving, downslope), so FS = tan(phi)/tan(psi) = 1.586."""
+carries N = W cos(psi), T = W sin(psi) (driving, downslope), so FS = tan(phi)/tan(psi) = 1.586. The forces
+are per metre of the blocks' thickness, as limit equilibrium's slices and the tables' kN/m say: a pair built
+2 m thick gives the same N and T (it gave twice them, labelled kN, before)."""
 import os
 
 import pytest
@@ -8,8 +10,9 @@ import pytest
 from conftest import HERE, run_yade
 
 
-def test_block_on_plane():
-    p = run_yade(os.path.join(HERE, "fs_two_blocks.py"), cwd=HERE)
+@pytest.mark.parametrize("thickness", [1.0, 2.0])
+def test_block_on_plane(thickness):
+    p = run_yade(os.path.join(HERE, "fs_two_blocks.py"), str(thickness), cwd=HERE)
     assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
     line = [l for l in p.stdout.splitlines() if l.startswith("RESULT")][0].split()
     ok, n, r = line[1], int(line[2]), float(line[3])
@@ -19,3 +22,5 @@ def test_block_on_plane():
     assert N == pytest.approx(N0, rel=1e-3)
     assert T == pytest.approx(T0, rel=1e-3)
     assert fs == pytest.approx(fs0, rel=1e-3)
+    shown = [l for l in p.stdout.splitlines() if l.startswith("REPR")][0]
+    assert "kN/m" in shown and " kN," not in shown, shown

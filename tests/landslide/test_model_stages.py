@@ -8,6 +8,7 @@ scripts/landslide_slope.py was 399 lines."""
 import json
 import math
 import os
+import re
 import subprocess
 
 from conftest import SRC, launcher
@@ -30,6 +31,8 @@ tans = sorted({round(I.phys.tanPhi, 12) for I in O.interactions if I.isReal})
 moved = max((b.state.pos - b.state.refPos).norm() for b in O.bodies)
 again = m.give_joint_sets(tol=1e-12, max_steps=200)  # (a budget: issue 37's trial waited 72 s for 100 000 steps)
 fs = m.contact_fs(plane)
+mid = (0.5 * (plane[0][0] + plane[1][0]), 0.5 * (plane[0][1] + plane[1][1]))
+m.contact_fs([plane[0], mid, (mid[0] + 1e-3, 5.8)], name="half plane, then up")  # up through the bricks
 lem = m.limit_equilibrium(polyline=plane + [(plane[1][0] + 1e-3, 5.8)])  # the plane, then up the crack
 lem20 = m.limit_equilibrium(polyline=plane + [(plane[1][0] + 1e-3, 5.8)], c=0, phi=math.radians(20))  # a strength given
 ratio = lem20["Fellenius, slip polyline"].fs / lem["Fellenius, slip polyline"].fs
@@ -76,12 +79,17 @@ def test_stages_of_the_main_example(tmp_path):
     assert float(rbsm[0].split()[5]) == round(r["fs"], 3)
     assert abs(float(fel[0].split()[3]) - math.tan(math.radians(30)) / math.tan(math.radians(35))) < 2e-3  # the wedge, c = 0
     assert r["engines"][-1] == "NewtonIntegrator"
+    # a polyline along the plane's joints, then up through bricks: the row says how little of it joints cover
+    half = [l for l in rows if l.startswith("RBSM contact forces, half plane, then up")]
+    cover = re.search(r"they cover (\d+) % of its ([0-9.]+) m in the slope", half[0])
+    assert cover and 30 <= int(cover.group(1)) <= 80 and "stress_fs" in half[0], half
+    assert "cover" not in rbsm[0]  # the plane lies along joints
 
     s = _run(tmp_path, "resume.py", RESUME)
     assert s["table"] == r["table"]  # the estimates were saved with the scene
     assert r["again"]["steps"] == 200 and not r["again"]["converged"]
     assert abs(r["ratio"] - math.tan(math.radians(20)) / math.tan(math.radians(30))) < 1e-9 and r["strength"] == "given"
-    assert s["stages"] == ["build", "in-situ", "joint strengths", "equilibrium", "contact forces", "limit equilibrium",
+    assert s["stages"] == ["build", "in-situ", "joint strengths", "equilibrium", "contact forces", "contact forces", "limit equilibrium",
                            "limit equilibrium", "dynamic"], s["stages"]
     assert s["labels"] == ["rbsmMonitor"], s["labels"]  # one recorder: no second progress line after the load
     assert all(os.path.getsize(f) > 0 for f in s["plot"])  # (on 12edc9b: AttributeError, no monitor)

@@ -112,7 +112,12 @@ def test_voronoi_pattern(tmp_path):
     assert "Table 2 (surface of slipping joints found by the program)" in s
     rbsm, _ = _fs_row(s, "RBSM contact forces, slip polyline")
     assert 0.3 < rbsm < 1.2
-    _fs_row(s, "RBSM contact forces, found surface")
+    _, note = _fs_row(s, "RBSM contact forces, found surface")
+    # two counts, each named: the joints whose forces were read, and those that slipped in the probe and drew it
+    # (need not agree, 4 and 6 here: forces are read from the joints on the polyline with a block on either side)
+    read, slipped = map(int, re.search(r"(\d+) joints on the surface \((\d+) slipped and drew it\)", note).groups())
+    drawn = int(re.search(r"^slipping surface: (\d+) slipping joints", s, re.M).group(1))
+    assert slipped == drawn and read >= 1, note
     _fs_row(s, "Fellenius, found surface")
     fel, _ = _fs_row(s, "Fellenius, slip polyline")
     assert fel == pytest.approx(math.tan(math.radians(30)) / math.tan(math.radians(35)), rel=5e-3)

@@ -115,6 +115,16 @@ def test_trend_tells_a_creeping_mechanism_from_a_slope_still_settling():
     assert _trend(steady[:7]) == "unclear"
 
 
+def test_a_creeping_trial_says_what_its_mass_fraction_is():
+    """A trial failed by creeping has no block beyond d_fail; its line said "FAILED (creeping ...), moving mass
+    0.0 %", which reads as a failure without motion. The fraction is named by what it counts."""
+    import sys
+    sys.path.insert(0, os.path.join(HERE, "..", "..", "py"))
+    from yade_rbsm.strength_reduction import Trial
+    line = str(Trial(1.2, True, "creeping", 4000, 3e-3, 0.004, 1.0, moving=0.0))
+    assert "FAILED (creeping" in line and "mass moved beyond d_fail 0.0 %" in line and "moving mass" not in line, line
+
+
 def test_the_main_example_brackets_by_mechanism_and_equilibrium(tmp_path):
     """scripts/landslide_slope.py --strength-reduction (issue 37): on e456729 its failed end F = 0.8375 'only did
     not converge within max_steps = 4000' (0.027 m moved, nothing ran away) and the FS was 0.834. Trials still

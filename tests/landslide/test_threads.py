@@ -24,7 +24,7 @@ def _run(threads, tmp):
                         "--time", "0.05", "--out", str(tmp / ("out%d" % threads))], cwd=str(tmp), capture_output=True, text=True, timeout=240)
     assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
     s = p.stdout
-    surface = re.search(r"^slipping surface: (\d+) joints, ([0-9.]+) m, polyline", s, re.M)
+    surface = re.search(r"^slipping surface: (\d+) slipping joints, ([0-9.]+) m, polyline", s, re.M)
     assert surface, "no slipping surface found at -j%d:\n%s" % (threads, s[-3000:])
 
     def row(label):

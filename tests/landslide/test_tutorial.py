@@ -60,7 +60,8 @@ def _run_tutorial(name, tmp_path, timeout=600):
 def test_soil_slope_tutorial_gives_bishop_with_the_blocks_estimate_beside_it(tmp_path):
     """The manual's soil-slope tutorial: fos() on Griffiths & Lane's slope in Voronoi blocks is Bishop's critical
     circle (within 1 % of the tutorial's own limit-equilibrium search), conclusive, and strength reduction on the
-    rigid blocks is shown beside it, above it (the interlocking the tutorial explains)."""
+    rigid blocks is shown beside it, above it (the interlocking the tutorial explains); the blocks' own stresses on
+    their critical circle (Kulhawy) within 5 % of Bishop (1.387 against 1.382)."""
     out = _run_tutorial("tutorial_soil_slope.py", tmp_path)
     m = re.search(r"FosResult\(fs=([0-9.]+) by Bishop, critical circle.*conclusive", out)
     b = re.search(r"Bishop, critical circle: ([0-9.]+)", out)
@@ -70,6 +71,8 @@ def test_soil_slope_tutorial_gives_bishop_with_the_blocks_estimate_beside_it(tmp
     assert abs(float(m.group(1)) / float(b.group(1)) - 1) < 0.01, out[-3000:]
     sr = re.search(r"strength reduction[^:]*: ([0-9.]+)", out)
     assert sr and float(sr.group(1)) > float(m.group(1)), out[-3000:]
+    kul = re.search(r"stress-based, critical circle \(blocks' stresses\): ([0-9.]+)", out)  # the page quotes 1.387
+    assert kul and abs(float(kul.group(1)) / float(b.group(1)) - 1) < 0.05, out[-3000:]
     assert os.path.getsize(str(tmp_path / "report.md")) > 0
 
 
