@@ -3,6 +3,7 @@
 #pragma once
 #include <core/IPhys.hpp>
 #include <pkg/rbsm/kernel/IntegrationRule.hpp>
+#include <pkg/rbsm/kernel/HeapValue.hpp>
 #include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
 
 #include <algorithm>
@@ -54,6 +55,12 @@ public:
 	std::array<Point, kInlinePoints> inlinePoints {};
 	MorePoints                       morePoints; ///< all the points when there are more than kInlinePoints
 	int                              nPoints = 0; ///< how many points (the geometry's nIP)
+	/// The dashpots' forces at each point (normal, shear) [N] as applied at the last step: the law counts their
+	/// work over the step they act in, with the velocity of the next (O.trackEnergy and damping only; not saved).
+	struct DashpotForces {
+		std::array<Real, 2 * rbsm::kMaxIntegrationPoints> f {};
+	};
+	rbsm::HeapValue<DashpotForces> lastDashpots;
 	Point*                           pointData() { return morePoints.data ? morePoints.data.get() : inlinePoints.data(); }
 	const Point*                     pointData() const { return morePoints.data ? morePoints.data.get() : inlinePoints.data(); }
 	Point&                           point(int k) { return pointData()[k]; }
