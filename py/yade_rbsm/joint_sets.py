@@ -448,16 +448,38 @@ def cut_by_joint_sets(sb, sets=(), traces=(), min_area=None, who="cut_by_joint_s
     return sb
 
 
-def jointset_blocks_dxf(filename, layers=None, outline_layer="OUTLINE", sets=(), units=None, **kw):
+def jointset_blocks_dxf(filename, layers=None, outline_layer="OUTLINE", sets=(), units=None, materials=(), **kw):
     """:func:`jointset_blocks` of a slope drawing: the closed polyline on *outline_layer* is the outline,
     the lines and polylines of the *layers* are joint traces (:func:`yade_rbsm.io.read_slope_dxf`; the
     drawing's units honoured, or *units*). *layers*: {layer: strength} with the keywords of :class:`Trace`
     (``dict(friction_angle=30, cohesion=1e4)``, or None for its defaults); default every layer with
     lines, at Trace's defaults. The traces of a layer are one family named after it in the report and in
-    ``joint_sets``. *sets*: JointSets generated over the outline besides; *kw*: jointset_blocks'."""
+    ``joint_sets``. *materials*: the rock units from the bottom up, ``[(layer, RbsmMat), ..., (None,
+    RbsmMat)]``: each named layer holds the top of its unit, one open polyline across the outline (bonded
+    rock: the blocks are cut along it, as jointset_blocks' *layers*), the last unit reaches the ground.
+    *sets*: JointSets generated over the outline besides; *kw*: jointset_blocks'."""
     from .io.slope_dxf import read_slope_dxf
+    units_given = list(materials)
+    for k, item in enumerate(units_given):
+        if not (isinstance(item, (tuple, list)) and len(item) == 2 and (item[0] is None or isinstance(item[0], str))):
+            raise ValueError("jointset_blocks_dxf: materials[%d] must be a (layer name or None, material) pair, got %r"
+                             % (k, item))
     d = read_slope_dxf(filename, outline_layer=outline_layer, trace_layers=None if layers is None else list(layers),
-                       units=units)
+                       units=units, material_layers=[l for l, _ in units_given if l is not None])
+    if units_given:
+        xs = [p[0] for p in d.outline]
+        tops = {}
+        for layer, top in d.materials.items():
+            top = top if top[0][0] < top[-1][0] else top[::-1]  # (drawn either way)
+            if any(b[0] <= a[0] for a, b in zip(top[:-1], top[1:])) or top[0][0] > min(xs) or top[-1][0] < max(xs):
+                raise ValueError("jointset_blocks_dxf: %s: the top of the unit on layer %r must run across the outline "
+                                 "(x from %g to %g), each vertex further along x; it runs from %g to %g" % (
+                                     filename, layer, min(xs), max(xs), top[0][0], top[-1][0]))
+            tops[layer.lower()] = top
+        if units_given[-1][0] is not None:
+            raise ValueError("jointset_blocks_dxf: the last of materials is the unit that reaches the ground: "
+                             "(None, material), got layer %r" % units_given[-1][0])
+        kw["layers"] = [(None if l is None else tops[l.lower()], m) for l, m in units_given]
     strength = {k.lower(): (v or {}) for k, v in (layers or {}).items()}
     traces = []
     for layer, polylines in d.traces.items():

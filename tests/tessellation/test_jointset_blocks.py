@@ -11,6 +11,7 @@ non-convex outline at toe level first, left a joint through the whole model).
 import math
 import os
 import random
+import re
 import sys
 from fractions import Fraction
 
@@ -239,6 +240,76 @@ def test_the_issue_slope_is_one_call_from_a_drawing_in_millimetres(tmp_path):
     assert [sc.source.friction_angle for sc in sb.joint_sets] == [30, 35] and sb.joint_sets[1].source.cohesion == 1e4
     for sc, r in zip(sb.joint_sets, ref.joint_sets):
         assert sc.length == pytest.approx(r.length, rel=1e-9)
+
+
+def _units_drawing(path, top, extra=None):
+    """The issue's slope drawing (metres) with SET_A's traces and the top of a shale unit on layer SHALE_TOP."""
+    import ezdxf
+    doc = ezdxf.new("R2010")
+    doc.header["$INSUNITS"] = 6
+    msp = doc.modelspace()
+    region = slope.slope_polygon(SURFACE, -10)
+    msp.add_lwpolyline(region, close=True, dxfattribs={"layer": "OUTLINE"})
+    for a, b in J.set_traces(slope.JointSet(**SET_A), _bbox(region)):
+        msp.add_line(a, b, dxfattribs={"layer": "SET_A"})
+    if top is not None:
+        msp.add_lwpolyline(top, dxfattribs={"layer": "SHALE_TOP"})
+    if extra:
+        extra(msp)
+    doc.saveas(path)
+    return region
+
+
+def test_material_units_from_a_drawing(tmp_path):
+    """Issue 36, "DXF in: ... material layers -> blocks": a layer holding the top of a rock unit (shale under
+    sandstone) drawn right to left across the outline. The blocks are cut along it (bonded rock, as
+    jointset_blocks' layers), each lies wholly on one side and takes its unit (Block.layer, sb.layers' material);
+    the layer is no joint trace. On 3b4a483 there was no way to give units from a drawing (materials= unknown)."""
+    top = [(45.0, -2.0), (12.0, -6.0), (-15.0, -4.0)]  # right to left, across x -10..40
+    region = _units_drawing(str(tmp_path / "units.dxf"), top)
+    shale, sandstone = object(), object()  # (the builder only carries them)
+    sb = slope.jointset_blocks_dxf(str(tmp_path / "units.dxf"), layers={"SET_A": dict(friction_angle=30)},
+                                   materials=[("SHALE_TOP", shale), (None, sandstone)])
+    check_cut(sb, region, [slope.JointSet(**SET_A)], [top[::-1]])
+    assert [sc.name for sc in sb.joint_sets] == ["SET_A"]
+    line = top[::-1]
+    from yade_rbsm.geometry import interp_y
+    below = [b for b in sb.free if b.layer == 0]
+    above = [b for b in sb.free if b.layer == 1]
+    assert below and above and len(below) + len(above) == len(sb.free)
+    for b in below:
+        assert all(y <= interp_y(line, x) + 1e-9 for x, y in b.vertices)
+    for b in above:
+        assert all(y >= interp_y(line, x) - 1e-9 for x, y in b.vertices)
+    assert sb.layers[0][1] is shale and sb.layers[1][1] is sandstone
+    shale_area = sum(b.area for b in below)
+    ref = slope.jointset_blocks(outline=region, sets=[slope.JointSet(**SET_A)], layers=[(line, shale), (None, sandstone)])
+    assert shale_area == pytest.approx(sum(b.area for b in ref.free if b.layer == 0), rel=1e-12)
+
+
+@pytest.mark.parametrize("case, message", [
+    ("missing", "no polyline on the material layer 'SHALE_TOP'"),
+    ("two", "2 polylines on the material layer 'SHALE_TOP'"),
+    ("closed", "open polyline across the outline (this one is closed)"),
+    ("short", "must run across the outline"),
+    ("last", "the last of materials is the unit that reaches the ground"),
+    ("pair", "must be a (layer name or None, material) pair"),
+])
+def test_bad_material_units_are_refused_by_name(tmp_path, case, message):
+    top = [(-15.0, -4.0), (45.0, -3.0)]
+    if case == "missing":
+        top = None
+    elif case == "short":
+        top = [(0.0, -4.0), (45.0, -3.0)]
+    extra = None
+    if case == "two":
+        extra = lambda msp: msp.add_lwpolyline([(-15, -8), (45, -8)], dxfattribs={"layer": "SHALE_TOP"})
+    if case == "closed":
+        top, extra = None, lambda msp: msp.add_lwpolyline([(-15, -8), (45, -8), (45, -9)], close=True, dxfattribs={"layer": "SHALE_TOP"})
+    _units_drawing(str(tmp_path / "bad.dxf"), top, extra)
+    units = {"last": [(None, 1), ("SHALE_TOP", 2)], "pair": [("SHALE_TOP",), (None, 2)]}.get(case, [("SHALE_TOP", 1), (None, 2)])
+    with pytest.raises(ValueError, match=re.escape(message)):
+        slope.jointset_blocks_dxf(str(tmp_path / "bad.dxf"), materials=units)
 
 
 @pytest.mark.parametrize("bad, message", [

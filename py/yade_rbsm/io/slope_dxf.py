@@ -7,6 +7,10 @@ or family of mapped joints. The drawing's units are honoured as :mod:`.dxf` says
 ``units=``). Refused, naming the file, the entity's handle and layer: no outline or more than one, an
 open, self-intersecting or bulged outline, a bulged trace, a trace of a single point. Entities of other
 kinds (text, hatches, dimensions) and layers not asked for are reported in a warning.
+
+Material layers (*material_layers*): a layer that holds the top of one rock unit, one open polyline
+across the outline (the boundary between it and the unit above); read as ``materials`` {layer: polyline},
+not as joint traces.
 """
 import warnings
 from dataclasses import dataclass, field
@@ -23,10 +27,12 @@ class SlopeDrawing:
     outline: List[Tuple[float, float]]  # counter-clockwise, metres
     traces: Dict[str, List[List[Tuple[float, float]]]] = field(default_factory=dict)  # layer -> polylines, metres
     scale: float = 1.0  # metres per drawing unit
+    materials: Dict[str, List[Tuple[float, float]]] = field(default_factory=dict)  # layer -> the top of its unit
 
     def __repr__(self):
-        return "SlopeDrawing(outline of %d vertices, traces: %s; %g m per drawing unit)" % (
-            len(self.outline), ", ".join("%s %d" % (k, len(v)) for k, v in self.traces.items()) or "none", self.scale)
+        return "SlopeDrawing(outline of %d vertices, traces: %s%s; %g m per drawing unit)" % (
+            len(self.outline), ", ".join("%s %d" % (k, len(v)) for k, v in self.traces.items()) or "none",
+            "; material tops: %s" % ", ".join(self.materials) if self.materials else "", self.scale)
 
 
 def _points(e, where):
@@ -49,13 +55,18 @@ def _points(e, where):
     return None, None
 
 
-def read_slope_dxf(filename, outline_layer="OUTLINE", trace_layers=None, units=None):
+def read_slope_dxf(filename, outline_layer="OUTLINE", trace_layers=None, units=None, material_layers=()):
     """The outline and the traces of the DXF *filename* (module docstring): a :class:`SlopeDrawing`.
-    *trace_layers*: the layers to read traces from (default: every layer but the outline's that has
-    lines); layer names match case-insensitively."""
+    *trace_layers*: the layers to read traces from (default: every layer but the outline's and the
+    *material_layers* that has lines); *material_layers*: layers each holding the top of a rock unit (one
+    open polyline); layer names match case-insensitively."""
     doc, scale = read_drawing(filename, units)
     wanted = None if trace_layers is None else {l.lower(): l for l in trace_layers}
-    outlines, traces, skipped, other_layers = [], {}, {}, set()
+    tops_wanted = {l.lower(): l for l in material_layers}
+    both = [l for l in tops_wanted if wanted is not None and l in wanted]
+    if both:
+        raise ValueError("read_slope_dxf: the layers %s are asked for as joint traces and as material tops" % both)
+    outlines, traces, skipped, other_layers, tops = [], {}, {}, set(), {}
     for e in doc.modelspace():
         layer = e.dxf.layer
         where = "%s: %s #%s on layer %r" % (filename, e.dxftype(), e.dxf.handle, layer)
@@ -66,6 +77,12 @@ def read_slope_dxf(filename, outline_layer="OUTLINE", trace_layers=None, units=N
         pts = [(x * scale, y * scale) for x, y in pts]
         if layer.lower() == outline_layer.lower():
             outlines.append((where, pts, closed))
+            continue
+        if layer.lower() in tops_wanted:
+            if closed:
+                raise ValueError("%s: a material layer holds the top of its unit, an open polyline across the "
+                                 "outline (this one is closed)" % where)
+            tops.setdefault(layer, []).append((where, pts))
             continue
         if wanted is not None and layer.lower() not in wanted:
             other_layers.add(layer)
@@ -88,8 +105,15 @@ def read_slope_dxf(filename, outline_layer="OUTLINE", trace_layers=None, units=N
         missing = [l for k, l in wanted.items() if k not in have]
         if missing:
             raise ValueError("%s: no trace on the layers %s" % (filename, ", ".join(map(repr, missing))))
+    for key, layer in tops_wanted.items():
+        found = [v for k, v in tops.items() if k.lower() == key]
+        if not found:
+            raise ValueError("%s: no polyline on the material layer %r (the top of its unit)" % (filename, layer))
+        if len(found[0]) > 1:
+            raise ValueError("%s: %d polylines on the material layer %r (%s): the top of a unit is one polyline" % (
+                filename, len(found[0]), layer, "; ".join(w for w, _ in found[0])))
     if skipped or other_layers:
         warnings.warn("read_slope_dxf: %s: skipped %s" % (filename, "; ".join(
             (["%d %s" % (n, k) for k, n in sorted(skipped.items())] if skipped else [])
             + (["the layers %s (not in trace_layers)" % ", ".join(sorted(other_layers))] if other_layers else []))))
-    return SlopeDrawing(outline, traces, scale)
+    return SlopeDrawing(outline, traces, scale, {k: v[0][1] for k, v in tops.items()})
