@@ -1,7 +1,6 @@
 #include <pkg/rbsm/Law2_RbsmGeom_RbsmPhys_MohrCoulomb.hpp>
 #include <pkg/rbsm/kernel/Hydrostatic.hpp>
 #include <pkg/rbsm/kernel/MohrCoulombJoint.hpp>
-#include <core/Omega.hpp>
 #include <core/Scene.hpp>
 
 #include <pkg/rbsm/DeformableState.hpp>
@@ -57,10 +56,9 @@ namespace {
 
 	// The second half of the last step's dashpot work (JointStep) for a joint the geometry has lost: at the
 	// last step's points, with the blocks' velocities now (their rigid motion).
-	Real lastDashpotsWork(const RbsmGeom& g, const RbsmPhys::DashpotForces& last, const Interaction& I)
+	Real lastDashpotsWork(const Scene& scene, const RbsmGeom& g, const RbsmPhys::DashpotForces& last, const Interaction& I)
 	{
-		const Scene* scene = Omega::instance().getScene().get();
-		const State &s1 = *scene->bodies->body[I.getId1()]->state, &s2 = *scene->bodies->body[I.getId2()]->state;
+		const State &s1 = *scene.bodies->body[I.getId1()]->state, &s2 = *scene.bodies->body[I.getId2()]->state;
 		const Vector2r t = g.tangent();
 		Real           w = 0;
 		for (int k = 0; k < g.nPoints(); k++) {
@@ -69,7 +67,7 @@ namespace {
 			const Vector2r v  = s2.vel.head<2>() + s2.angVel.z() * Vector2r(-r2.y(), r2.x()) - s1.vel.head<2>() - s1.angVel.z() * Vector2r(-r1.y(), r1.x());
 			w += last.f[2 * k] * -v.dot(g.normal) - last.f[2 * k + 1] * v.dot(t);
 		}
-		return Real(0.5) * w * scene->dt;
+		return Real(0.5) * w * scene.dt;
 	}
 
 	// A frictional contact that grows (a block tipping onto its face) takes in material with no shear
@@ -119,22 +117,24 @@ namespace {
 		Vector2r                      tangent, seg;
 		Real                          dt;
 		bool                          trackEnergy;
-		// The central-difference step changes the kinetic energy by F·(v⁻ + v⁺)/2 dt, v∓ the velocities half a
-		// step before and after the force: a dashpot's work is counted half with the velocity it is computed
-		// from, half at the next step with the velocity it acted at. (All of it with v⁻, a damped impact's
-		// ledger gained 8-46 % of its energy; with v⁺, lost 1-32 %: tests/physics/test_damped_impact.py.)
-		const Real* lastDashpots = nullptr; // the forces of the last step (normal, shear of each point), or none
-		Real*       dashpots     = nullptr; // this step's, kept for the next (null: not kept)
 	};
 
-	// The dashpots' work of the last step's second half, at point k of relative velocity (vn, vs) now.
-	inline Real lastDashpotWork(const JointStep& j, int k, Real vn, Real vs)
+	// The dashpots' work (O.energy's viscDamp). The central-difference step changes the kinetic energy by
+	// F·(v⁻ + v⁺)/2 dt, v∓ the velocities half a step before and after the force: a dashpot's work is counted
+	// half with the velocity it is computed from (now, forces now), half at the next step with the velocity it
+	// acted at (last, forces of the last step). (All of it with v⁻, a damped impact's ledger gained 8-46 % of
+	// its energy; with v⁺ it lost 1-32 %: tests/physics/test_damped_impact.py.) Forces: normal, shear of each
+	// point, as applied; either may be null.
+	Real dashpotWork(const RbsmGeom& g, const JointStep& j, int n, const Real* now, const Real* last)
 	{
-		return j.lastDashpots ? Real(0.5) * (j.lastDashpots[2 * k] * vn - j.lastDashpots[2 * k + 1] * vs) * j.dt : 0;
-	}
-	inline void keepDashpots(const JointStep& j, int k, Real dn, Real ds)
-	{
-		if (j.dashpots) j.dashpots[2 * k] = dn, j.dashpots[2 * k + 1] = ds;
+		Real w = 0;
+		for (int k = 0; k < n; k++) {
+			const Vector2r v  = j.kin.velocity(g.rule->s[k]);
+			const Real     vn = -v.dot(g.normal), vs = v.dot(j.tangent);
+			if (now) w += now[2 * k] * vn - now[2 * k + 1] * vs;
+			if (last) w += last[2 * k] * vn - last[2 * k + 1] * vs;
+		}
+		return Real(0.5) * w * j.dt;
 	}
 	struct JointSums {
 		Vector2r force    = Vector2r::Zero();
@@ -170,7 +170,7 @@ namespace {
 
 	// Point k of the rule: the law at the point (rbsm::updateJointPoint) and the viscous damping, added
 	// to the sums. (Inlined early, so that the sums can stay in registers.)
-	template <bool Strain> [[gnu::always_inline]] inline void addPoint(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int k, JointSums& sum)
+	template <bool Strain> [[gnu::always_inline]] inline void addPoint(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int k, JointSums& sum, Real* dashpots)
 	{
 		RbsmPhys::Point* const       pts = p.pointData();
 		const Real                   s   = g.rule->s[k];
@@ -182,7 +182,6 @@ namespace {
 		const rbsm::JointPointResult r   = rbsm::updateJointPoint(st, j.params, j.kin.overlap(s), vs * j.dt, a, j.trackEnergy);
 		pts[k].normalTraction            = r.normalTraction;
 		Real fn = r.normalForce, fs = r.shearForce;
-		sum.viscous += lastDashpotWork(j, k, vn, vs);
 		if (j.damped && !st.open) { // no damping force across an open joint
 			// shear damping only on the elastic branch: a slipping point is at its frictional limit
 			const Real dn = p.dampingCoefficient * vn * a;
@@ -193,8 +192,7 @@ namespace {
 			ds               = std::clamp(fs + ds, -limit, limit) - fs;
 			fn += dn;
 			fs += ds;
-			sum.viscous += Real(0.5) * (dn * vn - ds * vs) * j.dt; // (the first half)
-			keepDashpots(j, k, dn, ds);
+			dashpots[2 * k] = dn, dashpots[2 * k + 1] = ds; // (for the energy: dashpotWork)
 		}
 		addToSums<Strain>(g, j, s, fn, fs, r, st.open, ((st.intact ? j.params.cohesion : 0) + std::max<Real>(0, r.normalTraction) * p.tanPhi) * a, sum);
 	}
@@ -205,7 +203,7 @@ namespace {
 	// dashpots and the sums as addPoint's. The shear dashpots act while the joint sticks, and with the
 	// springs they stay within the joint's friction of the springs' normal force. N >= n: the size of
 	// the point arrays (small for the common 2 points: they are set up at every step).
-	template <int N, bool Strain> void addFrictionalPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n, JointSums& sum)
+	template <int N, bool Strain> void addFrictionalPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n, JointSums& sum, Real* dashpots)
 	{
 		RbsmPhys::Point* const pts = p.pointData();
 		Real                   s[N], a[N], overlap[N], dus[N], vn[N], vs[N];
@@ -235,10 +233,11 @@ namespace {
 		}
 		for (int k = 0; k < n; k++) {
 			pts[k].normalTraction = r[k].normalTraction;
-			sum.viscous += lastDashpotWork(j, k, vn[k], vs[k]) + Real(0.5) * (dn[k] * vn[k] - keep * ds[k] * vs[k]) * j.dt;
-			keepDashpots(j, k, dn[k], keep * ds[k]);
 			addToSums<Strain>(g, j, s[k], r[k].normalForce + dn[k], r[k].shearForce + keep * ds[k], r[k], pts[k].joint.open, r[k].normalForce * p.tanPhi, sum);
 		}
+		if (j.damped)
+			for (int k = 0; k < n; k++)
+				dashpots[2 * k] = dn[k], dashpots[2 * k + 1] = keep * ds[k]; // (for the energy: dashpotWork)
 	}
 }
 
@@ -252,7 +251,7 @@ namespace {
 	// (Why: a linear jump penalised at every edge of a Voronoi cell over-constrains the cells' linear
 	// fields, which then lock in any field but a uniform one: a Brazilian disc's centre carried 0.28 of its
 	// tension, tests/deformable/test_disc.py.) Out of line: the common joints' step does not carry it.
-	[[gnu::noinline]] JointSums weldedPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n)
+	[[gnu::noinline]] JointSums weldedPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n, Real* dashpots)
 	{
 		JointSums              sum;
 		constexpr int          N   = rbsm::kMaxIntegrationPoints;
@@ -274,11 +273,9 @@ namespace {
 		for (int k = 0; k < n; k++) {
 			pts[k].joint.shearTraction = mean[3] + (pts[k].joint.shearTraction - mean[3]) / b;
 			r[k] = rbsm::updateJointPoint(pts[k].joint, j.params, toPoint(dn[k], mean[0]), toPoint(vs[k], mean[2]) * j.dt, w[k] * j.area, j.trackEnergy);
-			sum.viscous += lastDashpotWork(j, k, vn[k], vs[k]);
 			if (j.damped) {
 				cn[k] = p.dampingCoefficient * toPoint(vn[k], mean[1]);
 				cs[k] = -p.dampingCoefficient * toPoint(vs[k], mean[2]);
-				sum.viscous += Real(0.5) * (cn[k] * toPoint(vn[k], mean[1]) - cs[k] * toPoint(vs[k], mean[2])) * w[k] * j.area * j.dt;
 			}
 			fMean[0] += w[k] * r[k].normalTraction, fMean[1] += w[k] * r[k].shearTraction;
 			cMean[0] += w[k] * cn[k], cMean[1] += w[k] * cs[k];
@@ -288,7 +285,7 @@ namespace {
 			pts[k].normalTraction      = sn;
 			pts[k].joint.shearTraction = tau;
 			const Real a = w[k] * j.area;
-			if (j.damped) keepDashpots(j, k, toPoint(cn[k], cMean[0]) * a, toPoint(cs[k], cMean[1]) * a); // (as applied)
+			if (j.damped) dashpots[2 * k] = toPoint(cn[k], cMean[0]) * a, dashpots[2 * k + 1] = toPoint(cs[k], cMean[1]) * a; // (as applied)
 			addToSums<true>(g, j, g.rule->s[k], (sn + toPoint(cn[k], cMean[0])) * a, (tau + toPoint(cs[k], cMean[1])) * a, r[k], false,
 			          std::numeric_limits<Real>::infinity(), sum); // (welded: unlimited)
 		}
@@ -376,7 +373,7 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 		if (scene->trackEnergy) {
 			scene->energy->add(storedEnergy(p, g, n), "jointRelease", jointReleaseIx, /*cumulative*/ false);
 			if (const auto* last = p.lastDashpots.get()) {
-				const Real w = lastDashpotsWork(g, *last, *I);
+				const Real w = lastDashpotsWork(*scene, g, *last, *I);
 				if (w != 0) scene->energy->add(w, "viscDamp", viscDampIx, /*cumulative*/ false);
 			}
 		}
@@ -391,10 +388,8 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 	p.dampingCoefficient = damped ? dampingRatio * 2 * std::sqrt(p.kn * area * g.reducedMass) / area : 0;
 	JointStep j { rbsm::JointParams { p.kn, p.ks, p.cohesion, p.tanPhi, p.tensileStrength, p.ductile }, area, damped, g.template kinematics<Strain>(), g.tangent(), g.p1 - g.p0,
 		      scene->dt, scene->trackEnergy };
-	Real       dashpots[2 * rbsm::kMaxIntegrationPoints]; // (set only when kept: the common joint does not write them)
-	const bool rememberDashpots = damped && scene->trackEnergy;
-	if (scene->trackEnergy) j.lastDashpots = p.lastDashpots.get() ? p.lastDashpots.get()->f.data() : nullptr;
-	if (rememberDashpots) std::fill_n(dashpots, 2 * n, Real(0)), j.dashpots = dashpots; // (an open point's carries nothing)
+	Real dashpots[2 * rbsm::kMaxIntegrationPoints]; // the dashpots' forces, written by damped joints only
+	if (damped) std::fill_n(dashpots, 2 * n, Real(0)); // (an open point's carries nothing)
 	if (Strain && p.welded) // a cut of a continuum: elastic, unlimited (the strengths are not used)
 		j.params.cohesion = j.params.tensileStrength = std::numeric_limits<Real>::infinity();
 	else if (p.cohesion != 0 || p.tensileStrength != 0) { // cohesionless joints have no bond to scale
@@ -407,17 +402,17 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 	JointSums sum;
 	sum.released = spreadShearOverGrowth(p, g, n, scene->trackEnergy);
 	if (frictional) {
-		if (n <= RbsmPhys::kInlinePoints) addFrictionalPoints<RbsmPhys::kInlinePoints, Strain>(g, p, j, n, sum);
-		else addFrictionalPoints<rbsm::kMaxIntegrationPoints, Strain>(g, p, j, n, sum);
+		if (n <= RbsmPhys::kInlinePoints) addFrictionalPoints<RbsmPhys::kInlinePoints, Strain>(g, p, j, n, sum, dashpots);
+		else addFrictionalPoints<rbsm::kMaxIntegrationPoints, Strain>(g, p, j, n, sum, dashpots);
 	}
 	else if (Strain && p.welded && p.linearShare < 1) {
 		const Real released = sum.released;
-		sum                 = weldedPoints(g, p, j, n);
+		sum                 = weldedPoints(g, p, j, n, dashpots);
 		sum.released += released;
 	}
 	else
 		for (int k = 0; k < n; k++)
-			addPoint<Strain>(g, p, j, k, sum);
+			addPoint<Strain>(g, p, j, k, sum, dashpots);
 	Real waterWork = 0;
 	if (!phreatic.empty()) {
 		const bool wet = p.water || waterAll;
@@ -427,10 +422,14 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 		else if (wet) p.waterForce = addWater<Strain>(g, j, phreatic, waterUnitWeight, 1, n, sum, waterWork);
 		else if (p.waterForce != 0) p.waterForce = 0;
 	} else if (p.waterForce != 0) p.waterForce = 0; // the water was taken away
-	if (rememberDashpots) {
-		RbsmPhys::DashpotForces kept;
-		std::copy_n(dashpots, 2 * n, kept.f.begin());
-		p.lastDashpots.set(kept);
+	if (scene->trackEnergy) { // (the dashpots' work: dashpotWork; their forces kept for the next step's half)
+		const auto* last = p.lastDashpots.get();
+		if (damped || last) sum.viscous += dashpotWork(g, j, n, damped ? dashpots : nullptr, last ? last->f.data() : nullptr);
+		if (damped) {
+			RbsmPhys::DashpotForces kept;
+			std::copy_n(dashpots, 2 * n, kept.f.begin());
+			p.lastDashpots.set(kept);
+		} else p.lastDashpots.reset();
 	} else p.lastDashpots.reset();
 	const Real torque2 = sum.momentP0 + cross(g.p0 - g.centroid2, sum.force);
 	const Real torque1 = -(sum.momentP0 + cross(g.p0 - g.centroid1, sum.force));
