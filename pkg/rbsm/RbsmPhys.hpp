@@ -55,8 +55,9 @@ public:
 	std::array<Point, kInlinePoints> inlinePoints {};
 	MorePoints                       morePoints; ///< all the points when there are more than kInlinePoints
 	int                              nPoints = 0; ///< how many points (the geometry's nIP)
-	/// The dashpots' forces at each point (normal, shear) [N] as applied at the last step: the law counts their
-	/// work over the step they act in, with the velocity of the next (O.trackEnergy and damping only; not saved).
+	/// The dashpots' forces at each point (normal, shear) [N] as applied at the last step: the law counts the second
+	/// half of their work at the next step, with the velocity they acted at (O.trackEnergy and damping only; not
+	/// saved: after O.load one step's half is not counted).
 	struct DashpotForces {
 		std::array<Real, 2 * rbsm::kMaxIntegrationPoints> f {};
 	};
