@@ -162,9 +162,10 @@ void RbsmPhys::preSave(RbsmPhys&)
 		slipping[k] = point(k).joint.slipping;
 		open[k]     = point(k).joint.open;
 	}
+	if (const auto* d = lastDashpots.get()) dashpotForces.assign(d->f.begin(), d->f.begin() + 2 * nPoints);
 }
 
-void RbsmPhys::postSave(RbsmPhys&) { shearTraction.clear(), normalTraction.clear(), intact.clear(), slipping.clear(), open.clear(); }
+void RbsmPhys::postSave(RbsmPhys&) { shearTraction.clear(), normalTraction.clear(), intact.clear(), slipping.clear(), open.clear(), dashpotForces.clear(); }
 
 void RbsmPhys::checkValue(const char* name, Real v)
 {
@@ -202,6 +203,12 @@ void RbsmPhys::postLoad(RbsmPhys& self)
 		if (!slipping.empty()) q.joint.slipping = slipping[k] != 0;
 		if (!open.empty()) q.joint.open = open[k] != 0;
 	}
+	if (!dashpotForces.empty()) { // (a scene saved with contact damping while energy was tracked)
+		if (dashpotForces.size() != 2 * n) throw std::invalid_argument("RbsmPhys.dashpotForces: two values per point expected");
+		DashpotForces d;
+		std::copy(dashpotForces.begin(), dashpotForces.end(), d.f.begin());
+		lastDashpots.set(d);
+	} else lastDashpots.reset();
 	postSave(self); // the points hold the state now
 }
 

@@ -56,8 +56,8 @@ public:
 	MorePoints                       morePoints; ///< all the points when there are more than kInlinePoints
 	int                              nPoints = 0; ///< how many points (the geometry's nIP)
 	/// The dashpots' forces at each point (normal, shear) [N] as applied at the last step: the law counts the second
-	/// half of their work at the next step, with the velocity they acted at (O.trackEnergy and damping only; not
-	/// saved: after O.load one step's half is not counted).
+	/// half of their work at the next step, with the velocity they acted at (O.trackEnergy and damping only;
+	/// saved as dashpotForces).
 	struct DashpotForces {
 		std::array<Real, 2 * rbsm::kMaxIntegrationPoints> f {};
 	};
@@ -146,7 +146,8 @@ public:
 		((std::vector<Real>, normalTraction, , Attr::hidden, "Saved form of the normal traction σn_k of each point [Pa]."))
 		((Flags, intact, , Attr::hidden, "Saved form of intactPoints."))
 		((Flags, slipping, , Attr::hidden, "Saved form of slippingPoints."))
-		((Flags, open, , Attr::hidden, "Saved form of openPoints.")),
+		((Flags, open, , Attr::hidden, "Saved form of openPoints."))
+		((std::vector<Real>, dashpotForces, , Attr::hidden, "Saved form of the dashpots' forces of the last step (normal, shear of each point) [N], whose work the law counts in part at the next step (O.trackEnergy with contact damping); empty when none.")),
 		/*ctor*/ createIndex();,
 		/*py*/
 		// (the strengths again, with a checked setter: these replace the attributes' own properties)
