@@ -200,7 +200,8 @@ def fos(sb=None, kind=None, d_fail=None, max_steps=None, patience=4, tol=1e-4, r
     else:
         b = estimates.get("Bishop, critical circle (blocks' material)", {}).get("fs")
         recommendation = ("Rigid blocks cut from a continuum overestimate its strength (a shear band must follow "
-                          "their faces: +65 to +94 % on Griffiths & Lane's slope, docs/slope_factor_of_safety.md); ")
+                          "their faces: on Griffiths & Lane's slope +65 to +94 % with brittle joints, +110 % with ductile ones, "
+                          "docs/slope_factor_of_safety.md); ")
         if b is not None:
             fs, method = b, "Bishop, critical circle (blocks' material)"
             recommendation += ("the design value is limit equilibrium's; strength reduction's and the blocks' own "

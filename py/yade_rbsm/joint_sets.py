@@ -475,6 +475,9 @@ def jointset_blocks_dxf(filename, layers=None, outline_layer="OUTLINE", sets=(),
                 raise ValueError("jointset_blocks_dxf: %s: the top of the unit on layer %r must run across the outline "
                                  "(x from %g to %g), each vertex further along x; it runs from %g to %g" % (
                                      filename, layer, min(xs), max(xs), top[0][0], top[-1][0]))
+            if not _enters(top, d.outline):  # (above or below the whole outline: every block would be one unit)
+                raise ValueError("jointset_blocks_dxf: %s: the top of the unit on layer %r does not cross the outline: "
+                                 "it runs wholly above or below it" % (filename, layer))
             tops[layer.lower()] = top
         if units_given[-1][0] is not None:
             raise ValueError("jointset_blocks_dxf: the last of materials is the unit that reaches the ground: "
@@ -488,6 +491,22 @@ def jointset_blocks_dxf(filename, layers=None, outline_layer="OUTLINE", sets=(),
             raise ValueError("jointset_blocks_dxf: layers[%r]: the name is the layer's and the points the drawing's" % layer)
         traces += [Trace(p, name=layer, **opts) for p in polylines]
     return jointset_blocks(outline=d.outline, sets=sets, traces=traces, **kw)
+
+
+def _enters(polyline, region, samples=64):
+    """Whether *polyline* passes inside the polygon *region* (points along each segment, even-odd rule)."""
+    n = len(region)
+    for (x0, y0), (x1, y1) in zip(polyline[:-1], polyline[1:]):
+        for j in range(1, samples):
+            x, y = x0 + (x1 - x0) * j / samples, y0 + (y1 - y0) * j / samples
+            inside = False
+            for i in range(n):
+                (ax, ay), (bx, by) = region[i], region[(i + 1) % n]
+                if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
+                    inside = not inside
+            if inside:
+                return True
+    return False
 
 
 def _extended(seg, d, start=True, end=True):

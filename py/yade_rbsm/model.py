@@ -350,6 +350,11 @@ class SlopeModel:
                              % ("both" if polyline is not None else "neither"))
         if self.sb is None or self.material is None:
             raise ValueError("SlopeModel.stress_fs: the model has no blocks yet (build() first)")
+        if name is not None and not isinstance(name, str):
+            raise ValueError("SlopeModel.stress_fs: name must be a string (the table's row), got %r" % (name,))
+        if circle is not None:
+            from .contact_safety import _check_circle
+            circle = _check_circle(circle)  # (xc, yc, R): numbers, R > 0, named if not
         w0 = time.time()
         kh, kv = _pseudo_static()
         soil = le_slope(self.sb.surface, self.material, kh=kh, kv=kv)

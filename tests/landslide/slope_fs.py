@@ -138,7 +138,8 @@ elif what == "model_stress":
     fine.append(m.stress_fs(polyline=poly, n=800).fs)
     errors = {}
     m.contact_fs(poly, name="polyline on Bishop's circle")  # a surface through blocks: (almost) no joint on it
-    for k, kw in dict(neither={}, both=dict(circle=(C.xc, C.yc, C.R), polyline=poly)).items():
+    for k, kw in dict(neither={}, both=dict(circle=(C.xc, C.yc, C.R), polyline=poly), two=dict(circle=(20, 25)),
+                      name=dict(circle=(C.xc, C.yc, C.R), name=5)).items():
         try:
             m.stress_fs(**kw)
             errors[k] = "accepted"

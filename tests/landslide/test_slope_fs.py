@@ -113,6 +113,8 @@ def test_fs_along_any_surface_through_the_blocks():
     assert r["circle"] == pytest.approx(r["bishop"], rel=0.05)
     assert r["fine"][1] == pytest.approx(r["fine"][0], rel=1e-3)
     assert "neither" in r["errors"]["neither"] and "both" in r["errors"]["both"]
+    # (a new user's: a circle of two numbers gave a TypeError about Circle's R; name=5 one about str + int, after the run)
+    assert "circle must be (xc, yc, R)" in r["errors"]["two"] and "name must be a string" in r["errors"]["name"], r["errors"]
     rows = [l for l in r["table"].splitlines() if l.startswith("RBSM block stresses, ")]
     assert len(rows) == 4 and "c 10 kPa, phi 20.0 deg" in rows[0], r["table"]
     contact = [l for l in r["table"].splitlines() if l.startswith("RBSM contact forces, polyline on Bishop's circle")]

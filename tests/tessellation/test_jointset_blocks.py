@@ -293,6 +293,8 @@ def test_material_units_from_a_drawing(tmp_path):
     ("closed", "open polyline across the outline (this one is closed)"),
     ("short", "must run across the outline"),
     ("last", "the last of materials is the unit that reaches the ground"),
+    ("above", "does not cross the outline: it runs wholly above or below it"),
+    ("below", "does not cross the outline: it runs wholly above or below it"),
     ("pair", "must be a (layer name or None, material) pair"),
 ])
 def test_bad_material_units_are_refused_by_name(tmp_path, case, message):
@@ -301,6 +303,8 @@ def test_bad_material_units_are_refused_by_name(tmp_path, case, message):
         top = None
     elif case == "short":
         top = [(0.0, -4.0), (45.0, -3.0)]
+    elif case in ("above", "below"):  # across the outline's x range, but over or under it (a new user's drawing)
+        top = [(-15.0, 30.0), (45.0, 31.0)] if case == "above" else [(-15.0, -13.0), (45.0, -12.0)]
     extra = None
     if case == "two":
         extra = lambda msp: msp.add_lwpolyline([(-15, -8), (45, -8)], dxfattribs={"layer": "SHALE_TOP"})
