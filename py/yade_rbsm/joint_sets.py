@@ -493,20 +493,9 @@ def jointset_blocks_dxf(filename, layers=None, outline_layer="OUTLINE", sets=(),
     return jointset_blocks(outline=d.outline, sets=sets, traces=traces, **kw)
 
 
-def _enters(polyline, region, samples=64):
-    """Whether *polyline* passes inside the polygon *region* (points along each segment, even-odd rule)."""
-    n = len(region)
-    for (x0, y0), (x1, y1) in zip(polyline[:-1], polyline[1:]):
-        for j in range(1, samples):
-            x, y = x0 + (x1 - x0) * j / samples, y0 + (y1 - y0) * j / samples
-            inside = False
-            for i in range(n):
-                (ax, ay), (bx, by) = region[i], region[(i + 1) % n]
-                if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
-                    inside = not inside
-            if inside:
-                return True
-    return False
+def _enters(polyline, region):
+    """Whether *polyline* passes inside the polygon *region*."""
+    return any(_inside_length(seg, region) > 0 for seg in zip(polyline[:-1], polyline[1:]))
 
 
 def _extended(seg, d, start=True, end=True):

@@ -324,7 +324,7 @@ class SlopeModel:
         from .safety import contact_fs
         w0 = time.time()
         r = contact_fs(polyline)
-        inside = length_inside(polyline, self.sb.surface, self.sb.base) if self.sb is not None else 0.0
+        inside = length_inside(polyline, self.sb) if self.sb is not None else 0.0
         cover = r.length / inside if inside > 0 else float("nan")
         note = "T = %.1f kN/m, N = %.1f kN/m, %d joints" % (r.shear, r.normal, r.n_joints)
         if cover < 0.8:  # (the rest crosses blocks, whose strength is not in this FS; a plane of bricks: 89 %)
@@ -525,19 +525,12 @@ def _pseudo_static():
     return abs(gx) / gm, 1.0 + gy / gm
 
 
-def length_inside(polyline, ground, base):
-    """Length [m] of *polyline* between the *ground* polyline and the level *base* (inside the slope)."""
-    from .geometry import interp_y
-    total = 0.0
-    for (x0, y0), (x1, y1) in zip(polyline[:-1], polyline[1:]):
-        k = 64  # each segment sampled: a slip polyline crosses the ground once or twice
-        for j in range(k):
-            xa, ya = x0 + (x1 - x0) * j / k, y0 + (y1 - y0) * j / k
-            xb, yb = x0 + (x1 - x0) * (j + 1) / k, y0 + (y1 - y0) * (j + 1) / k
-            xm, ym = 0.5 * (xa + xb), 0.5 * (ya + yb)
-            if base <= ym <= interp_y(ground, xm):
-                total += math.hypot(xb - xa, yb - ya)
-    return total
+def length_inside(polyline, sb):
+    """Length [m] of *polyline* inside the slope of the blocks *sb* (its polygon, or ground and base)."""
+    from .joint_sets import _inside_length
+    from .slope import slope_polygon
+    region = getattr(sb, "polygon", None) or slope_polygon(sb.surface, sb.base)
+    return sum(_inside_length(seg, region) for seg in zip(polyline[:-1], polyline[1:]))
 
 
 def _blocks(O):
