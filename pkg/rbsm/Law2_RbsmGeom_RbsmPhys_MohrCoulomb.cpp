@@ -54,22 +54,6 @@ namespace {
 		p.normalForce = p.shearForce = p.strength = 0;
 	}
 
-	// The second half of the last step's dashpot work (JointStep) for a joint the geometry has lost: at the
-	// last step's points, with the blocks' velocities now (their rigid motion).
-	Real lastDashpotsWork(const Scene& scene, const RbsmGeom& g, const RbsmPhys::DashpotForces& last, const Interaction& I)
-	{
-		const State &s1 = *scene.bodies->body[I.getId1()]->state, &s2 = *scene.bodies->body[I.getId2()]->state;
-		const Vector2r t = g.tangent();
-		Real           w = 0;
-		for (int k = 0; k < g.nPoints(); k++) {
-			const Vector2r x  = g.p0 + g.rule->s[k] * (g.p1 - g.p0);
-			const Vector2r r1 = x - s1.pos.head<2>(), r2 = x - s2.pos.head<2>();
-			const Vector2r v  = s2.vel.head<2>() + s2.angVel.z() * Vector2r(-r2.y(), r2.x()) - s1.vel.head<2>() - s1.angVel.z() * Vector2r(-r1.y(), r1.x());
-			w += last.f[2 * k] * -v.dot(g.normal) - last.f[2 * k + 1] * v.dot(t);
-		}
-		return Real(0.5) * w * scene.dt;
-	}
-
 	// A frictional contact that grows (a block tipping onto its face) takes in material with no shear
 	// displacement: its points' shear tractions, spread over the new length, keep their old force
 	// (held, they would create shear force and energy from nothing). Bonded points are the shared
@@ -125,16 +109,27 @@ namespace {
 	// acted at (last, forces of the last step). (All of it with v⁻, a damped impact's ledger gained 8-46 % of
 	// its energy; with v⁺ it lost 1-32 %: tests/physics/test_damped_impact.py.) Forces: normal, shear of each
 	// point, as applied; either may be null.
-	Real dashpotWork(const RbsmGeom& g, const JointStep& j, int n, const Real* now, const Real* last)
+	Real dashpotWork(const RbsmGeom& g, const rbsm::SegmentKinematics& kin, Real dt, int n, const Real* now, const Real* last)
 	{
-		Real w = 0;
+		const Vector2r t = g.tangent();
+		Real           w = 0;
 		for (int k = 0; k < n; k++) {
-			const Vector2r v  = j.kin.velocity(g.rule->s[k]);
-			const Real     vn = -v.dot(g.normal), vs = v.dot(j.tangent);
+			const Vector2r v  = kin.velocity(g.rule->s[k]);
+			const Real     vn = -v.dot(g.normal), vs = v.dot(t);
 			if (now) w += now[2 * k] * vn - now[2 * k + 1] * vs;
 			if (last) w += last[2 * k] * vn - last[2 * k + 1] * vs;
 		}
-		return Real(0.5) * w * j.dt;
+		return Real(0.5) * w * dt;
+	}
+
+	// A joint the geometry has lost: its last step's dashpots' second half, at that step's segment with the
+	// blocks' rigid motion now (the geometry no longer updates its kinematics).
+	Real lostJointDashpotWork(const Scene& scene, const RbsmGeom& g, const RbsmPhys::DashpotForces& last, const Interaction& I)
+	{
+		const State &s1 = *scene.bodies->body[I.getId1()]->state, &s2 = *scene.bodies->body[I.getId2()]->state;
+		const rbsm::SegmentKinematics kin = rbsm::segmentKinematics(0, 0, g.p0, g.p1, s1.pos.head<2>(), s1.vel.head<2>(), s1.angVel.z(),
+		                                                            s2.pos.head<2>(), s2.vel.head<2>(), s2.angVel.z());
+		return dashpotWork(g, kin, scene.dt, g.nPoints(), nullptr, last.f.data());
 	}
 	struct JointSums {
 		Vector2r force    = Vector2r::Zero();
@@ -373,7 +368,7 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 		if (scene->trackEnergy) {
 			scene->energy->add(storedEnergy(p, g, n), "jointRelease", jointReleaseIx, /*cumulative*/ false);
 			if (const auto* last = p.lastDashpots.get()) {
-				const Real w = lastDashpotsWork(*scene, g, *last, *I);
+				const Real w = lostJointDashpotWork(*scene, g, *last, *I);
 				if (w != 0) scene->energy->add(w, "viscDamp", viscDampIx, /*cumulative*/ false);
 			}
 		}
@@ -424,7 +419,7 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 	} else if (p.waterForce != 0) p.waterForce = 0; // the water was taken away
 	if (scene->trackEnergy) { // (the dashpots' work: dashpotWork; their forces kept for the next step's half)
 		const auto* last = p.lastDashpots.get();
-		if (damped || last) sum.viscous += dashpotWork(g, j, n, damped ? dashpots : nullptr, last ? last->f.data() : nullptr);
+		if (damped || last) sum.viscous += dashpotWork(g, j.kin, j.dt, n, damped ? dashpots : nullptr, last ? last->f.data() : nullptr);
 		if (damped) {
 			RbsmPhys::DashpotForces kept;
 			std::copy_n(dashpots, 2 * n, kept.f.begin());
