@@ -59,7 +59,7 @@ namespace {
 	// (held, they would create shear force and energy from nothing). Bonded points are the shared
 	// edge's material and keep theirs. Returns the shear springs' energy this loses, the area of every
 	// point following the length (negative for bonded points that grow; with O.trackEnergy).
-	Real spreadShearOverGrowth(RbsmPhys& p, const RbsmGeom& g, int n, bool withEnergy)
+	[[gnu::always_inline]] inline Real spreadShearOverGrowth(RbsmPhys& p, const RbsmGeom& g, int n, bool withEnergy)
 	{
 		const Real old = p.contactLength, length = g.length;
 		p.contactLength = length;
@@ -197,9 +197,12 @@ namespace {
 	// A frictional joint (no intact point): its points together (rbsm::updateFrictionalPoints), then the
 	// dashpots and the sums as addPoint's. The shear dashpots act while the joint sticks, and with the
 	// springs they stay within the joint's friction of the springs' normal force. N >= n: the size of
-	// the point arrays (small for the common 2 points: they are set up at every step).
-	template <int N, bool Strain> void addFrictionalPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int n, JointSums& sum, Real* dashpots)
+	// the point arrays (small for the common 2 points: they are set up at every step). Count > 0: n is known to
+	// be Count (the common 2: the loops unrolled, without copies of the rule's arrays).
+	template <int N, bool Strain, int Count = 0> void addFrictionalPoints(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int nGiven, JointSums& sum, Real* dashpots)
 	{
+		static_assert(Count >= 0 && Count <= N);
+		const int              n   = Count > 0 ? Count : nGiven;
 		RbsmPhys::Point* const pts = p.pointData();
 		Real                   s[N], a[N], overlap[N], dus[N], vn[N], vs[N];
 		for (int k = 0; k < n; k++) {
@@ -385,19 +388,21 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 		      scene->dt, scene->trackEnergy };
 	Real dashpots[2 * rbsm::kMaxIntegrationPoints]; // the dashpots' forces, written by damped joints only
 	if (damped) std::fill_n(dashpots, 2 * n, Real(0)); // (an open point's carries nothing)
+	const bool cohesive = p.cohesion != 0 || p.tensileStrength != 0;
 	if (Strain && p.welded) // a cut of a continuum: elastic, unlimited (the strengths are not used)
 		j.params.cohesion = j.params.tensileStrength = std::numeric_limits<Real>::infinity();
-	else if (p.cohesion != 0 || p.tensileStrength != 0) { // cohesionless joints have no bond to scale
+	else if (cohesive) { // cohesionless joints have no bond to scale
 		const Real bonded = bondedFraction(p, g, j.kin, j.tangent, scene->dt);
 		j.params.cohesion *= bonded;
 		j.params.tensileStrength *= bonded;
 	}
 	// frictional: no bond left (or none to begin with): the joint slips as a whole
-	const bool frictional = !(Strain && p.welded) && ((p.cohesion == 0 && p.tensileStrength == 0) || p.nIntact() == 0);
+	const bool frictional = !(Strain && p.welded) && (!cohesive || p.nIntact() == 0);
 	JointSums sum;
 	sum.released = spreadShearOverGrowth(p, g, n, scene->trackEnergy);
 	if (frictional) {
-		if (n <= RbsmPhys::kInlinePoints) addFrictionalPoints<RbsmPhys::kInlinePoints, Strain>(g, p, j, n, sum, dashpots);
+		constexpr int two = RbsmPhys::kInlinePoints;
+		if (n == two) addFrictionalPoints<two, Strain, two>(g, p, j, n, sum, dashpots);
 		else addFrictionalPoints<rbsm::kMaxIntegrationPoints, Strain>(g, p, j, n, sum, dashpots);
 	}
 	else if (Strain && p.welded && p.linearShare < 1) {

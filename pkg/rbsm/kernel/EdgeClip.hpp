@@ -31,6 +31,9 @@ namespace detail {
 		Vec2                nrm(int i) const { return p.normal(i); }
 	};
 
+	// The vertex after i on a polygon of n (edge i runs from vertex i to it); a compare, not a division.
+	inline int nextVertex(int i, int n) { return i + 1 < n ? i + 1 : 0; }
+
 	// Separation of polygon Q from edge i of P, m: the smallest signed distance of a vertex of Q
 	// in front of the edge's line (> 0: Q is entirely outside that edge).
 	template <class PP, class PQ> Real edgeSeparation(const PP& P, int i, const PQ& Q)
@@ -48,7 +51,7 @@ namespace detail {
 	// supportOnInc): the same terms in the same order, the others being larger.
 	template <class PR, class PI> Real separationAtIncident(const PR& R, int refEdge, const PI& I, int inc)
 	{
-		const int  i1 = inc + 1 < I.n ? inc + 1 : 0;
+		const int  i1 = nextVertex(inc, I.n);
 		const Vec2 n  = R.nrm(refEdge);
 		const Vec2 v  = R.v(refEdge);
 		Real       s  = std::numeric_limits<Real>::infinity();
@@ -107,7 +110,7 @@ namespace detail {
 			else k.facing |= uint64_t(d > kParallel) << i;
 		}
 		const Vec2 r0      = R.v(refEdge);
-		const int  inc1    = inc + 1 < I.n ? inc + 1 : 0;
+		const int  inc1    = nextVertex(inc, I.n);
 		const Real atInc   = std::min(nRef.dot(I.v(inc) - r0), nRef.dot(I.v(inc1) - r0));
 		bool       support = true;
 		for (int i = 0; i < I.n && support; ++i)
@@ -256,14 +259,14 @@ namespace detail {
 		// reference edge frame: the outward normal is the polygon's own (exactly the one the
 		// separating-axis search used), the tangent follows the CCW direction
 		s.r0             = R.v(job.refEdge);
-		const Vec2 r1    = R.v((job.refEdge + 1) % R.n);
+		const Vec2 r1    = R.v(nextVertex(job.refEdge, R.n));
 		s.nRef           = R.nrm(job.refEdge);
 		s.tRef           = Vec2(-s.nRef.y(), s.nRef.x());
 		s.Lr             = (r1 - s.r0).norm();
 		uint64_t  up     = 0;
 		const int found  = incidentEdge(I, s.nRef, job.cert, up);
 		const int inc    = job.incGiven >= 0 ? job.incGiven : found;
-		s.q0 = I.v(inc), s.q1 = I.v((inc + 1) % nI);
+		s.q0 = I.v(inc), s.q1 = I.v(nextVertex(inc, nI));
 		s.x0 = s.tRef.dot(s.q0 - s.r0), s.x1 = s.tRef.dot(s.q1 - s.r0);
 		s.g0 = -s.nRef.dot(s.q0 - s.r0), s.g1 = -s.nRef.dot(s.q1 - s.r0);
 		// Each clip is a linear condition on lambda; where it holds at both ends it holds on all of
