@@ -26,11 +26,11 @@ namespace {
 		const bool certified = k.incEdge >= 0 && k.incLead > 2 * chord && chord < kFacingMargin;
 		if (onlyCertified && !(certified && k.supportOnInc)) return false;
 		auto sepOf = [&](int body, int edge) { return body == 1 ? edgeSeparation(A, edge, B) : edgeSeparation(B, edge, A); };
-		auto prefSepOf = [&]() {
-			if (!(certified && k.supportOnInc)) return sepOf(rb, re);
-			return rb == 1 ? separationAtIncident(A, re, B, k.incEdge) : separationAtIncident(B, re, A, k.incEdge);
-		};
-		const Real prefSep = prefSepOf();
+		// with the support certified, the two edges are read once, for the separation and the clip
+		const bool atIncident = certified && k.supportOnInc;
+		EdgePair   edges {};
+		if (atIncident) edges = rb == 1 ? edgePair(A, re, B, k.incEdge) : edgePair(B, re, A, k.incEdge);
+		const Real prefSep = atIncident ? separationAtIncident(edges) : sepOf(rb, re);
 		bool       keep    = prefSep + tol >= m.maxOther + drift;
 		for (int r = 0; r < 2 && keep; ++r) {
 			if (m.rivalBody[r] == 0) continue;
@@ -49,6 +49,7 @@ namespace {
 		// (the clip writes every other field)
 		ClipJob job;
 		job.refBody = rb, job.refEdge = re, job.maxSep = maxSep, job.cert = certified ? &k : nullptr;
+		job.known = atIncident ? &edges : nullptr;
 		if (clipOnReference(A, B, job, c)) {
 			c.separation = prefSep;
 			return true;

@@ -47,16 +47,25 @@ namespace detail {
 	}
 	inline Real edgeSeparation(const PolygonView& P, int i, const PolygonView& Q) { return edgeSeparation(arrays(P), i, arrays(Q)); }
 
-	// The same minimum where it is certified to be at the incident edge's ends (ClipCertificate::
-	// supportOnInc): the same terms in the same order, the others being larger.
-	template <class PR, class PI> Real separationAtIncident(const PR& R, int refEdge, const PI& I, int inc)
+	// A followed contact's two edges as read once (a posed polygon's vertices and normal placed once) for both its
+	// separation and its clip: the reference edge's first vertex and normal, the incident edge inc's ends.
+	struct EdgePair {
+		Vec2 r0, nRef, q0, q1;
+		bool wraps; ///< the incident edge is the polygon's last (its second end is vertex 0)
+	};
+	template <class PR, class PI> EdgePair edgePair(const PR& R, int refEdge, const PI& I, int inc)
 	{
-		const int  i1 = nextVertex(inc, I.n);
-		const Vec2 n  = R.nrm(refEdge);
-		const Vec2 v  = R.v(refEdge);
-		Real       s  = std::numeric_limits<Real>::infinity();
-		s             = std::min(s, n.dot(I.v(std::min(inc, i1)) - v));
-		return std::min(s, n.dot(I.v(std::max(inc, i1)) - v));
+		const int i1 = nextVertex(inc, I.n);
+		return EdgePair { R.v(refEdge), R.nrm(refEdge), I.v(inc), I.v(i1), i1 < inc };
+	}
+
+	// edgeSeparation where it is certified to be at the incident edge's ends (ClipCertificate::supportOnInc):
+	// the same terms in the same order (vertices by index), the others being larger.
+	inline Real separationAtIncident(const EdgePair& e)
+	{
+		Real s = std::numeric_limits<Real>::infinity();
+		s      = std::min(s, e.nRef.dot((e.wraps ? e.q1 : e.q0) - e.r0));
+		return std::min(s, e.nRef.dot((e.wraps ? e.q0 : e.q1) - e.r0));
 	}
 
 	// Radius of the clip certificates (ClipCertificate), a fraction of the smaller block's size: larger
@@ -129,7 +138,8 @@ namespace detail {
 	// memory's search (ClipCertificate), checked by the caller for this step: the incident edge and
 	// the facing edges are taken from it, and the quiet clips are skipped, which changes nothing (each
 	// would have left [lo, hi] as it is); record: filled with the certificates of this clip (strict,
-	// no incGiven) if something is left; radius: theirs (m).
+	// no incGiven) if something is left; radius: theirs (m); known: the two edges as already read (with cert,
+	// whose incident edge it holds).
 	struct ClipJob {
 		int                    refBody = 1, refEdge = 0;
 		Real                   maxSep   = 0;
@@ -138,6 +148,7 @@ namespace detail {
 		const ClipCertificate* cert     = nullptr;
 		ClipCertificate*       record   = nullptr;
 		Real                   radius   = 0;
+		const EdgePair*        known    = nullptr;
 	};
 
 	// The incident edge q0 -> q1 in the reference edge's frame, and the part [lo, hi] of it (parameter
@@ -258,15 +269,17 @@ namespace detail {
 		ClipSpan  s;
 		// reference edge frame: the outward normal is the polygon's own (exactly the one the
 		// separating-axis search used), the tangent follows the CCW direction
-		s.r0             = R.v(job.refEdge);
+		const EdgePair* known = job.cert ? job.known : nullptr;
+		s.r0             = known ? known->r0 : R.v(job.refEdge);
 		const Vec2 r1    = R.v(nextVertex(job.refEdge, R.n));
-		s.nRef           = R.nrm(job.refEdge);
+		s.nRef           = known ? known->nRef : R.nrm(job.refEdge);
 		s.tRef           = Vec2(-s.nRef.y(), s.nRef.x());
 		s.Lr             = (r1 - s.r0).norm();
 		uint64_t  up     = 0;
 		const int found  = incidentEdge(I, s.nRef, job.cert, up);
 		const int inc    = job.incGiven >= 0 ? job.incGiven : found;
-		s.q0 = I.v(inc), s.q1 = I.v(nextVertex(inc, nI));
+		if (known && job.incGiven < 0) s.q0 = known->q0, s.q1 = known->q1;
+		else s.q0 = I.v(inc), s.q1 = I.v(nextVertex(inc, nI));
 		s.x0 = s.tRef.dot(s.q0 - s.r0), s.x1 = s.tRef.dot(s.q1 - s.r0);
 		s.g0 = -s.nRef.dot(s.q0 - s.r0), s.g1 = -s.nRef.dot(s.q1 - s.r0);
 		// Each clip is a linear condition on lambda; where it holds at both ends it holds on all of
