@@ -7,7 +7,7 @@ The bearing pressure q (footing force / B t) rises to the collapse pressure; Pra
 
     build/yade-rbsm -j1 -n -x scripts/prandtl_footing_study.py '{"cells": "triangles", "h": 0.1}'
 
-Params (one JSON object): cells (voronoi | triangles | quads), h (/ B), seed, penalty (RbsmMat.penalty, 10),
+Params (one JSON object): cells (voronoi | triangles | crossed | quads), h (/ B), seed, penalty (RbsmMat.penalty, 10),
 linearShare (of the welded joints, default Ip2's 1/penalty), steps, settlement (final, / B), png (a picture of the
 blocks coloured by plastic shear at the end).
 Prints the curve q/c against settlement/B and the last fifth's mean."""
@@ -49,6 +49,9 @@ def grid_cells(kind):
             a, b, cc, d = (xs[i], ys[j]), (xs[i + 1], ys[j]), (xs[i + 1], ys[j + 1]), (xs[i], ys[j + 1])
             if kind == "quads":
                 cells.append([a, b, cc, d])
+            elif kind == "crossed":  # both diagonals: four triangles about the centre (Nagtegaal's unlocked mesh)
+                m = ((a[0] + cc[0]) / 2, (a[1] + cc[1]) / 2)
+                cells += [[a, b, m], [b, cc, m], [cc, d, m], [d, a, m]]
             else:  # alternating diagonals
                 cells += [[a, b, cc], [a, cc, d]] if (i + j) % 2 == 0 else [[a, b, d], [b, cc, d]]
     return cells
