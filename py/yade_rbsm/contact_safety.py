@@ -50,11 +50,11 @@ def contact_fs(surface, tol=None, O=None, allow_empty=False):
         if point_polyline_distance(p0, poly) > tol or point_polyline_distance(p1, poly) > tol:
             continue
         c1, c2 = O.bodies[I.id1].state.pos, O.bodies[I.id2].state.pos
-        s1, s2 = _side((c1[0], c1[1]), poly), _side((c2[0], c2[1]), poly)
+        t = (g.tangent[0], g.tangent[1])
+        s1, s2 = _above_joint(c1, p0, p1, t, poly), _above_joint(c2, p0, p1, t, poly)
         if s1 * s2 >= 0:
             continue
         upper_is_2 = s2 > 0
-        t = (g.tangent[0], g.tangent[1])
         d = t if t[0] * direction > 0 else (-t[0], -t[1])
         t_, n_, r_ = _joint_terms(I, upper_is_2, d)
         T += t_
@@ -68,6 +68,16 @@ def contact_fs(surface, tol=None, O=None, allow_empty=False):
                          "surface: SlopeModel.stress_fs, limit_equilibrium.stress_polyline)" % (_short(poly), tol))
     fs = R / abs(T) if T != 0 else float("inf")
     return ContactFS(fs, N / 1e3, T / 1e3, R / 1e3, len(used), L, used)
+
+
+def _above_joint(c, p0, p1, t, poly):
+    """> 0 if the centroid c is above the line of a joint p0-p1 (tangent t) that lies on the polyline: judged
+    against the joint's own line, not the polyline's height at c's x, which past a kink is another segment's."""
+    if t[0] == 0:  # (a vertical joint cannot lie on a polyline of increasing x but by round-off: the old rule)
+        return _side((c[0], c[1]), poly)
+    d = t if t[0] > 0 else (-t[0], -t[1])
+    m = (0.5 * (p0[0] + p1[0]), 0.5 * (p0[1] + p1[1]))
+    return d[0] * (c[1] - m[1]) - d[1] * (c[0] - m[0])
 
 
 def _short(poly, most=3):

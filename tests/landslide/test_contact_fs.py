@@ -2,7 +2,10 @@
 block along a plane joint inclined at psi = 20 deg, phi = 30 deg, c = 0. At equilibrium the joint
 carries N = W cos(psi), T = W sin(psi) (driving, downslope), so FS = tan(phi)/tan(psi) = 1.586. The forces
 are per metre of the blocks' thickness, as limit equilibrium's slices and the tables' kN/m say: a pair built
-2 m thick gives the same N and T (it gave twice them, labelled kN, before)."""
+2 m thick gives the same N and T (it gave twice them, labelled kN, before). A polyline that follows the joint and
+then leaves its end steeply down (a toe's exit), under the centroid of a base block reaching past the joint, reads
+the same joint: the blocks' sides are judged against the joint's own line (judged by the height above the
+polyline at each centroid's x, both blocks were "above" it and the joint was dropped)."""
 import os
 
 import pytest
@@ -10,9 +13,9 @@ import pytest
 from conftest import HERE, run_yade
 
 
-@pytest.mark.parametrize("thickness", [1.0, 2.0])
-def test_block_on_plane(thickness):
-    p = run_yade(os.path.join(HERE, "fs_two_blocks.py"), str(thickness), cwd=HERE)
+@pytest.mark.parametrize("thickness,surface", [(1.0, "plane"), (2.0, "plane"), (1.0, "kink")])
+def test_block_on_plane(thickness, surface):
+    p = run_yade(os.path.join(HERE, "fs_two_blocks.py"), str(thickness), surface, cwd=HERE)
     assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
     line = [l for l in p.stdout.splitlines() if l.startswith("RESULT")][0].split()
     ok, n, r = line[1], int(line[2]), float(line[3])
