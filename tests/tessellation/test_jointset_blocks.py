@@ -13,6 +13,7 @@ import os
 import random
 import re
 import sys
+import warnings
 from fractions import Fraction
 
 import pytest
@@ -240,6 +241,23 @@ def test_the_issue_slope_is_one_call_from_a_drawing_in_millimetres(tmp_path):
     assert [sc.source.friction_angle for sc in sb.joint_sets] == [30, 35] and sb.joint_sets[1].source.cohesion == 1e4
     for sc, r in zip(sb.joint_sets, ref.joint_sets):
         assert sc.length == pytest.approx(r.length, rel=1e-9)
+
+
+def test_a_unitless_drawing_kilometres_across_is_named(tmp_path):
+    """A drawing in millimetres saved without units ($INSUNITS 0) is read in metres (as documented): a 20 m slope
+    becomes 20 km. The reader says so and names the way out (before, it said nothing); units='mm' reads it
+    right, without the warning; the same slope drawn in metres without units gets none."""
+    _slope_drawing(str(tmp_path / "mm.dxf"), insunits=0)
+    with pytest.warns(UserWarning, match="no units .* units='mm'"):
+        sb = slope.jointset_blocks_dxf(str(tmp_path / "mm.dxf"), layers={"SET_A": None, "SET_B": None})
+    assert sb.slope_area == pytest.approx(1000.0 * 1e6)
+    for units, k in (("mm", 1000.0), (None, 1.0)):
+        _slope_drawing(str(tmp_path / "x.dxf"), insunits=0, k=k)
+        with warnings.catch_warnings(record=True) as seen:
+            warnings.simplefilter("always")
+            sb = slope.jointset_blocks_dxf(str(tmp_path / "x.dxf"), layers={"SET_A": None, "SET_B": None}, units=units)
+        assert not [w for w in seen if "no units" in str(w.message)], units
+        assert sb.slope_area == pytest.approx(1000.0)
 
 
 def _units_drawing(path, top, extra=None):

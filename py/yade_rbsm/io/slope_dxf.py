@@ -6,7 +6,8 @@ joint traces on other layers: LINEs and open or closed LWPOLYLINE/POLYLINEs, one
 or family of mapped joints. The drawing's units are honoured as :mod:`.dxf` says ($INSUNITS or
 ``units=``). Refused, naming the file, the entity's handle and layer: no outline or more than one, an
 open, self-intersecting or bulged outline, a bulged trace, a trace of a single point. Entities of other
-kinds (text, hatches, dimensions) and layers not asked for are reported in a warning.
+kinds (text, hatches, dimensions) and layers not asked for are reported in a warning, and so is a drawing without
+units (read in metres) whose outline is kilometres across (drawn in millimetres? ``units='mm'``).
 
 Material layers (*material_layers*): a layer that holds the top of one rock unit, one open polyline
 across the outline (the boundary between it and the unit above); read as ``materials`` {layer: polyline},
@@ -55,6 +56,22 @@ def _points(e, where):
     return None, None
 
 
+# A drawing without units is read in metres; an outline wider or taller than this [m] is rather in millimetres.
+_IMPLAUSIBLE_SLOPE = 5000.0
+
+
+def _warn_if_unitless_and_huge(doc, units, filename, outline):
+    """A warning for a unitless drawing ($INSUNITS 0) whose outline, read in metres, is kilometres across: a slope
+    drawn in millimetres and read so is a million times too large (and too heavy) without it."""
+    if units is not None or doc.header.get("$INSUNITS", 0) != 0:
+        return
+    w = max(p[0] for p in outline) - min(p[0] for p in outline)
+    h = max(p[1] for p in outline) - min(p[1] for p in outline)
+    if max(w, h) > _IMPLAUSIBLE_SLOPE:
+        warnings.warn("read_slope_dxf: %s: the drawing has no units ($INSUNITS 0) and is read in metres: its outline is "
+                      "%.4g m by %.4g m; if it is drawn in millimetres, give units='mm'" % (filename, w, h))
+
+
 def read_slope_dxf(filename, outline_layer="OUTLINE", trace_layers=None, units=None, material_layers=()):
     """The outline and the traces of the DXF *filename* (module docstring): a :class:`SlopeDrawing`.
     *trace_layers*: the layers to read traces from (default: every layer but the outline's and the
@@ -100,6 +117,7 @@ def read_slope_dxf(filename, outline_layer="OUTLINE", trace_layers=None, units=N
             filename, len(outlines), outline_layer, "; ".join(w for w, _, _ in outlines)))
     where, pts, closed = outlines[0]
     outline, _ = block_outline(pts, closed, where)
+    _warn_if_unitless_and_huge(doc, units, filename, outline)
     if wanted is not None:
         have = {l.lower() for l in traces}
         missing = [l for k, l in wanted.items() if k not in have]
