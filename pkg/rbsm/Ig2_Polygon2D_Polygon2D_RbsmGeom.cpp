@@ -234,12 +234,14 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 	// A followed joint whose search memory certifies this step: from the few vertices it needs
 	// (rbsm::followContact, bit for bit edgeContact's result; its certificate holds for rigid shapes only).
 	// Otherwise block 2 is placed whole.
+	// a potential interaction (bounding boxes overlap) whose blocks are clearly apart: no search, and mostly
+	// not even B placed whole (the edges facing the centroids decide)
+	if (!g && !strained && rbsm::separatedAlongCentres(va, pb, maxSeparation, pair.minSize)) return Outcome::Apart;
 	if (!(g && !strained && rbsm::followContact(va, pb, query, coherence, c))) {
 		rbsm::Vec2              stackB[2 * kStackVertices];
 		std::vector<rbsm::Vec2> placedHeap;
 		if (pb.local.n > kStackVertices) placedHeap.resize(2 * size_t(pb.local.n));
 		const rbsm::PolygonView vb = pb.place(pb.local.n > kStackVertices ? placedHeap.data() : stackB);
-		// a potential interaction (bounding boxes overlap) whose blocks are clearly apart: no search
 		if (!g && rbsm::separatedBeyond(va, vb, maxSeparation, pair.minSize)) return Outcome::Apart;
 		rbsm::SearchMemory newMemory; // a new contact's first search; kept in the geometry if it is made
 		if (!g) coherence.memory = &newMemory;

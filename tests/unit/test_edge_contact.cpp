@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <cmath>
+#include <iostream>
 #include <random>
 
 using namespace rbsm;
@@ -423,4 +424,39 @@ TEST(EdgeContact, SeparatedBeyondAgreesWithTheFullSearch)
 	EXPECT_GT(rejected, 5000); // the test must exercise both outcomes
 	EXPECT_LT(rejected, 15000);
 	EXPECT_EQ(rejected, apart);
+}
+
+// separatedAlongCentres (the cheap first try of Ig2's rejection of a potential interaction: the edge of either
+// block that faces the other's centroid, tested with the other block's vertices placed one by one) answers only
+// "apart" and only where separatedBeyond on the placed polygons does too; it must catch most apart pairs, or
+// it is work for nothing. Random convex shapes (rectangles, regular 3- to 9-gons, sizes 0.05-5) at random poses.
+TEST(EdgeContact, SeparatedAlongCentresIsSeparatedBeyondWhereItAnswers)
+{
+	std::mt19937                         rng(7);
+	std::uniform_real_distribution<Real> u(0, 1);
+	auto                                 shape = [&](int trial, Real size) {
+                std::vector<Vec2> v;
+                if (trial % 3 == 0) return rect(-0.5 * size, -0.2 * size, size, 0.4 * size);
+                const int n = 3 + trial % 7;
+                for (int k = 0; k < n; ++k) v.push_back(0.5 * size * Vec2(std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n)));
+                return v;
+	};
+	int apart = 0, caught = 0;
+	for (int trial = 0; trial < 20000; ++trial) {
+		const Real              sa = std::pow(10.0, 2 * u(rng) - 1.3), sb = std::pow(10.0, 2 * u(rng) - 1.3);
+		const std::vector<Vec2> A = shape(trial, sa), Bl = shape(trial / 3, sb);
+		const std::vector<Vec2> nA = edgeNormals(A), nB = edgeNormals(Bl);
+		const Real              dist = (0.5 * (sa + sb)) * (0.3 + 1.2 * u(rng)), dir = 2 * M_PI * u(rng), turn = 2 * M_PI * u(rng);
+		const PosedPolygon      B { PolygonView { Bl.data(), nB.data(), int(Bl.size()) },
+                               Pose2(dist * Vec2(std::cos(dir), std::sin(dir)), std::cos(turn), std::sin(turn)) };
+		std::vector<Vec2>       placed(2 * Bl.size());
+		const PolygonView       va { A.data(), nA.data(), int(A.size()) }, vb = B.place(placed.data());
+		const Real              minSize = std::min(sa, sb), maxSep = trial % 5 == 0 ? 1e-3 * minSize : 0.0;
+		const bool              full = separatedBeyond(va, vb, maxSep, minSize), quick = separatedAlongCentres(va, B, maxSep, minSize);
+		if (quick) EXPECT_TRUE(full) << "trial " << trial;
+		apart += full, caught += quick;
+	}
+	EXPECT_GT(apart, 3000);
+	EXPECT_GT(caught, 0.8 * apart) << caught << " of " << apart << " apart pairs caught";
+	std::cout << "separatedAlongCentres: " << caught << " of " << apart << " apart pairs\n";
 }

@@ -228,4 +228,22 @@ bool separatedBeyond(const PolygonView& A, const PolygonView& B, Real maxSeparat
 	return false;
 }
 
+bool separatedAlongCentres(const PolygonView& A, const PosedPolygon& B, Real maxSeparation, Real minSize)
+{
+	const int nA = A.n, nB = B.local.n;
+	if (nA < 3 || nB < 3) return false;
+	const Real beyond = std::max(maxSeparation, Real(0)) + 2 * roundOffSlop(minSize);
+	// the edge of P whose outward normal points most along d (P's own frame)
+	auto facing = [](const Vec2* normals, int n, const Vec2& d) {
+		int best = 0;
+		for (int i = 1; i < n; ++i)
+			if (normals[i].dot(d) > normals[best].dot(d)) best = i;
+		return best;
+	};
+	const Posed  b { B, nB };
+	const Arrays a = arrays(A);
+	if (edgeSeparation(a, facing(A.nrm, nA, B.pose.p), b) > beyond) return true;
+	return edgeSeparation(b, facing(B.local.nrm, nB, B.pose.unrotate(-B.pose.p)), a) > beyond;
+}
+
 } // namespace rbsm

@@ -151,4 +151,11 @@ struct PosedPolygon {
 /// (bounding boxes overlap, blocks apart), which YADE hands to the geometry functor at every step.
 bool separatedBeyond(const PolygonView& A, const PolygonView& B, Real maxSeparation, Real minSize);
 
+/// separatedBeyond's "apart" where it is quick: A in its own frame (its centroid at the origin) and B posed in it;
+/// the edge of A that faces B's centroid and the edge of B that faces A's are tested first, B's vertices and
+/// normal placed one by one (PosedPolygon, the arithmetic of its place()). True if either separates them by more
+/// than separatedBeyond's limit (separatedBeyond(A, B.place(...)) is then true as well); false: not decided, and
+/// the caller places B and asks separatedBeyond. For the potential interactions of a pile, most of them apart.
+bool separatedAlongCentres(const PolygonView& A, const PosedPolygon& B, Real maxSeparation, Real minSize);
+
 } // namespace rbsm
