@@ -5,7 +5,7 @@ import math
 from dataclasses import dataclass
 
 from . import omega
-from .geometry import check_polyline, height_above as _side, point_polyline_distance
+from .geometry import check_polyline, point_polyline_distance, point_segment_distance
 
 __all__ = ["ContactFS", "contact_fs", "contact_fs_circle"]
 
@@ -50,11 +50,11 @@ def contact_fs(surface, tol=None, O=None, allow_empty=False):
         if point_polyline_distance(p0, poly) > tol or point_polyline_distance(p1, poly) > tol:
             continue
         c1, c2 = O.bodies[I.id1].state.pos, O.bodies[I.id2].state.pos
-        t = (g.tangent[0], g.tangent[1])
-        s1, s2 = _above_joint(c1, p0, p1, t, poly), _above_joint(c2, p0, p1, t, poly)
+        s1, s2 = _above_joint(c1, p0, p1, poly), _above_joint(c2, p0, p1, poly)
         if s1 * s2 >= 0:
             continue
         upper_is_2 = s2 > 0
+        t = (g.tangent[0], g.tangent[1])
         d = t if t[0] * direction > 0 else (-t[0], -t[1])
         t_, n_, r_ = _joint_terms(I, upper_is_2, d)
         T += t_
@@ -70,14 +70,13 @@ def contact_fs(surface, tol=None, O=None, allow_empty=False):
     return ContactFS(fs, N / 1e3, T / 1e3, R / 1e3, len(used), L, used)
 
 
-def _above_joint(c, p0, p1, t, poly):
-    """> 0 if the centroid c is above the line of a joint p0-p1 (tangent t) that lies on the polyline: judged
-    against the joint's own line, not the polyline's height at c's x, which past a kink is another segment's."""
-    if t[0] == 0:  # (a vertical joint cannot lie on a polyline of increasing x but by round-off: the old rule)
-        return _side((c[0], c[1]), poly)
-    d = t if t[0] > 0 else (-t[0], -t[1])
+def _above_joint(c, p0, p1, poly):
+    """> 0 if the centroid c is above the polyline's segment that a joint p0-p1 lies on, extended as a line: the
+    side of that segment, not the polyline's height at c's x, which past a kink is another segment's. (Not the
+    joint's own line: a short joint across the surface is near it only by its shortness.)"""
     m = (0.5 * (p0[0] + p1[0]), 0.5 * (p0[1] + p1[1]))
-    return d[0] * (c[1] - m[1]) - d[1] * (c[0] - m[0])
+    a, b = min(zip(poly[:-1], poly[1:]), key=lambda s: point_segment_distance(m, s[0], s[1]))
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 
 
 def _short(poly, most=3):
