@@ -231,12 +231,12 @@ struct Ig2_Polygon2D_Polygon2D_RbsmGeom::Pair {
 	if (g) hint = rbsm::ContactHint { g->refBody, g->refEdge };
 	const rbsm::ContactQuery query { maxSeparation, g ? &hint : nullptr, hysteresis, pair.minSize };
 	rbsm::Coherence          coherence { { rbsm::Pose2(), pair.A.circumradius }, { pair.rel, pair.B.circumradius }, g ? &g->searchMemory : nullptr };
+	// A potential interaction (bounding boxes overlap) whose blocks are clearly apart: no search, and mostly
+	// not even block 2 placed whole (the edges facing the centroids decide; else separatedBeyond, below).
+	if (!g && !strained && rbsm::separatedAlongCentres(va, pb, maxSeparation, pair.minSize)) return Outcome::Apart;
 	// A followed joint whose search memory certifies this step: from the few vertices it needs
 	// (rbsm::followContact, bit for bit edgeContact's result; its certificate holds for rigid shapes only).
 	// Otherwise block 2 is placed whole.
-	// a potential interaction (bounding boxes overlap) whose blocks are clearly apart: no search, and mostly
-	// not even B placed whole (the edges facing the centroids decide)
-	if (!g && !strained && rbsm::separatedAlongCentres(va, pb, maxSeparation, pair.minSize)) return Outcome::Apart;
 	if (!(g && !strained && rbsm::followContact(va, pb, query, coherence, c))) {
 		rbsm::Vec2              stackB[2 * kStackVertices];
 		std::vector<rbsm::Vec2> placedHeap;
