@@ -186,3 +186,30 @@ report(before=before, after=after, insunits=ezdxf.readfile("out.dxf").header.get
 """
     (r,) = run_ok(script, workdir=str(tmp_path))
     assert sum(r["after"], []) == pytest.approx(sum(r["before"], [])) and r["insunits"] == 6
+
+
+UNITLESS = r"""
+import warnings
+import yade_rbsm.io as io
+rock = RbsmMat(label="rock", density=2500)
+O.materials.append(rock)
+said = {}
+for f, kw in (("wall_mm.dxf", {}), ("wall_mm.dxf", {"units": "mm"}), ("unitless.dxf", {})):
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        bs = io.import_dxf(f, rock, **kw)
+    said[f + str(kw)] = [str(w.message) for w in seen if "no units" in str(w.message)]
+report(said=said)
+"""
+
+
+def test_a_unitless_drawing_kilometres_across_is_named(tmp_path):
+    """A 10 m block drawn in millimetres and saved without units is read in metres (as documented), 10 km across;
+    import_dxf says so and names units='mm' (as read_slope_dxf does; it said nothing before). With units='mm' no
+    warning; a drawing 1 km across (the test above's, a 1 m square in mm) is below the 5 km that is named."""
+    _square_drawing(str(tmp_path / "wall_mm.dxf"), 0, 10000.0)
+    _square_drawing(str(tmp_path / "unitless.dxf"), 0, 1000.0)
+    (r,) = run_ok(UNITLESS, workdir=str(tmp_path))
+    (message,) = r["said"]["wall_mm.dxf{}"]
+    assert "import_dxf" in message and "wall_mm.dxf" in message and "units='mm'" in message, message
+    assert r["said"]["wall_mm.dxf{'units': 'mm'}"] == [] and r["said"]["unitless.dxf{}"] == []

@@ -8,8 +8,9 @@ an error naming the file, the entity's handle and layer: open polylines, arc seg
 fewer than 3 distinct vertices, self-intersecting or non-convex outlines, layers without a
 material. Other entities (lines, text, hatches ...) are skipped with a warning that counts them.
 
-Units: the drawing's ``$INSUNITS`` scales it to metres (0, unitless, is taken as metres; a unit that is
-no length for a slope, e.g. parsecs, is refused naming it), or ``units=`` says them ("mm", "cm", "dm",
+Units: the drawing's ``$INSUNITS`` scales it to metres (0, unitless, is taken as metres, with a warning when
+the drawing is more than 5 km across: drawn in millimetres?; a unit that is no length for a slope, e.g.
+parsecs, is refused naming it), or ``units=`` says them ("mm", "cm", "dm",
 "m", "km", "in", "ft", "yd"). Thickness: a polyline's DXF thickness (group 39, in the drawing's units) is
 the block's thickness; ``export_dxf`` writes it, and ``$INSUNITS = 6`` (metres), so a round trip keeps
 the mass. The materials are not in the drawing, only their labels (the layers): give them on import.
@@ -20,7 +21,7 @@ from yade import wrapper
 
 from ..blocks import polygon2d
 from ..omega import is_fixed
-from .dxf_units import _ezdxf, drawing_scale, read_drawing  # noqa: F401 (drawing_scale: part of this module's API)
+from .dxf_units import _ezdxf, drawing_scale, read_drawing, warn_if_unitless_and_huge  # noqa: F401 (drawing_scale: part of this module's API)
 from .polylines import block_outline
 
 __all__ = ["import_dxf", "export_dxf", "drawing_scale"]
@@ -77,8 +78,9 @@ def import_dxf(filename, materials, fixed_layers=(), thickness=None, O=None, uni
         from yade import O
     doc, scale = read_drawing(filename, units)
     fixed = {l.lower() for l in fixed_layers}
-    bodies = []
+    bodies, drawn = [], []
     for where, layer, pts, closed, drawn_thickness in _rings(doc.modelspace(), filename):
+        drawn += pts
         ring, _ = block_outline([(x * scale, y * scale) for x, y in pts], closed, where)
         mat = _material(layer, materials, O, where)
         t = drawn_thickness * scale if drawn_thickness > 0 else (1.0 if thickness is None else thickness)
@@ -86,6 +88,7 @@ def import_dxf(filename, materials, fixed_layers=(), thickness=None, O=None, uni
             bodies.append(polygon2d(ring, mat, thickness=t, fixed=layer.lower() in fixed))
         except ValueError as e:
             raise ValueError("%s: %s" % (where, e)) from None
+    warn_if_unitless_and_huge(doc, units, filename, drawn, "import_dxf")
     return bodies
 
 

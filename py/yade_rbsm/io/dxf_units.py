@@ -1,7 +1,9 @@
 """The length unit of a DXF drawing, and ezdxf itself (pure Python, no YADE): shared by the block
 importer (:mod:`.dxf`) and the slope-drawing reader (:mod:`.slope_dxf`)."""
 
-__all__ = ["drawing_scale", "read_drawing"]
+import warnings
+
+__all__ = ["drawing_scale", "read_drawing", "warn_if_unitless_and_huge"]
 
 # $INSUNITS codes of lengths a slope is drawn in -> metres, and the names units= takes
 _INSUNITS = {0: ("unitless, taken as metres", 1.0), 1: ("in", 0.0254), 2: ("ft", 0.3048), 4: ("mm", 1e-3),
@@ -22,6 +24,23 @@ def drawing_scale(doc, units, filename):
                              filename, code, ", ".join("%d %s" % (k, v[0]) for k, v in sorted(_INSUNITS.items())),
                              ", ".join(sorted(_UNITS))))
     return _INSUNITS[code][1]
+
+
+# A drawing without units is read in metres; one wider or taller than this [m] is rather in millimetres.
+_IMPLAUSIBLE_EXTENT = 5000.0
+
+
+def warn_if_unitless_and_huge(doc, units, filename, points, who):
+    """A warning (naming *who*, the reader) for a drawing without units ($INSUNITS 0, no *units*) whose *points*, read
+    in metres, are kilometres across: a slope drawn in millimetres and read so is a million times too large (and
+    too heavy) without it."""
+    if units is not None or doc.header.get("$INSUNITS", 0) != 0 or not points:
+        return
+    w = max(p[0] for p in points) - min(p[0] for p in points)
+    h = max(p[1] for p in points) - min(p[1] for p in points)
+    if max(w, h) > _IMPLAUSIBLE_EXTENT:
+        warnings.warn("%s: %s: the drawing has no units ($INSUNITS 0) and is read in metres: it is %.4g m by %.4g m "
+                      "across; if it is drawn in millimetres, give units='mm'" % (who, filename, w, h))
 
 
 def read_drawing(filename, units=None):

@@ -17,7 +17,7 @@ import warnings
 from dataclasses import dataclass, field
 from typing import Dict, List, Tuple
 
-from .dxf_units import read_drawing
+from .dxf_units import read_drawing, warn_if_unitless_and_huge
 from .polylines import block_outline
 
 __all__ = ["SlopeDrawing", "read_slope_dxf"]
@@ -54,22 +54,6 @@ def _points(e, where):
         xy = [e.ocs().to_wcs(p) for p in pts] if e.is_2d_polyline else pts
         return [(p.x, p.y) for p in xy], e.is_closed
     return None, None
-
-
-# A drawing without units is read in metres; an outline wider or taller than this [m] is rather in millimetres.
-_IMPLAUSIBLE_SLOPE = 5000.0
-
-
-def _warn_if_unitless_and_huge(doc, units, filename, outline):
-    """A warning for a unitless drawing ($INSUNITS 0) whose outline, read in metres, is kilometres across: a slope
-    drawn in millimetres and read so is a million times too large (and too heavy) without it."""
-    if units is not None or doc.header.get("$INSUNITS", 0) != 0:
-        return
-    w = max(p[0] for p in outline) - min(p[0] for p in outline)
-    h = max(p[1] for p in outline) - min(p[1] for p in outline)
-    if max(w, h) > _IMPLAUSIBLE_SLOPE:
-        warnings.warn("read_slope_dxf: %s: the drawing has no units ($INSUNITS 0) and is read in metres: its outline is "
-                      "%.4g m by %.4g m; if it is drawn in millimetres, give units='mm'" % (filename, w, h))
 
 
 def read_slope_dxf(filename, outline_layer="OUTLINE", trace_layers=None, units=None, material_layers=()):
@@ -117,7 +101,7 @@ def read_slope_dxf(filename, outline_layer="OUTLINE", trace_layers=None, units=N
             filename, len(outlines), outline_layer, "; ".join(w for w, _, _ in outlines)))
     where, pts, closed = outlines[0]
     outline, _ = block_outline(pts, closed, where)
-    _warn_if_unitless_and_huge(doc, units, filename, outline)
+    warn_if_unitless_and_huge(doc, units, filename, outline, "read_slope_dxf")
     if wanted is not None:
         have = {l.lower() for l in traces}
         missing = [l for k, l in wanted.items() if k not in have]
