@@ -17,6 +17,7 @@
 #   build/yade-rbsm -n -x scripts/slope_fs_study.py --slope 45 --mode calibrated --spacing 1 --seed 1
 #   build/yade-rbsm -j1 -n -x scripts/slope_fs_study.py --slope 45 --mode joints --cj 12999 --tanphij 0.2267
 #   build/yade-rbsm -j1 -n -x scripts/slope_fs_study.py --slope 30 --mode stress --spacing 0.5 --seed 2
+#   build/yade-rbsm -j1 -n -x scripts/slope_fs_study.py --slope gl --mode plastic --cells crossed --spacing 1
 import argparse
 import json
 import math
@@ -35,10 +36,12 @@ from yade_rbsm.strength_reduction import strength_reduction
 
 # (under yade -x, __file__ is yade's own script: the scripts folder from the package's place)
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(yr.__file__)))), "scripts"))
-from reference_slopes import GAMMA, H, SLOPES, ground, search, soil as soil_of  # noqa: E402
+from reference_slopes import GAMMA, H, SLOPES, face_length, ground, search, soil as soil_of  # noqa: E402
 ap = argparse.ArgumentParser()
 ap.add_argument("--slope", choices=sorted(SLOPES), default="gl")
-ap.add_argument("--mode", choices=["raw", "ductile", "calibrated", "joints", "table", "stress"], default="raw")
+ap.add_argument("--mode", choices=["raw", "ductile", "calibrated", "joints", "table", "stress", "plastic"], default="raw")
+ap.add_argument("--cells", choices=["voronoi", "triangles", "crossed"], default="voronoi", help="--mode plastic: the blocks")
+ap.add_argument("--penalty", type=float, default=10.0, help="--mode plastic: RbsmMat.penalty of the welded joints")
 ap.add_argument("--young", type=float, default=100e6, help="E of the blocks [Pa]")
 ap.add_argument("--poisson", type=float, default=0.3, help="Poisson's ratio of the blocks")
 ap.add_argument("--brittle", action="store_true", help="--mode stress: brittle joints (Kawai's), as in --mode raw")
@@ -111,10 +114,47 @@ elif args.mode == "joints":
         ap.error("--mode joints needs --cj and --tanphij")
     cj, tj = args.cj, args.tanphij
     print("joints: c_j = %.5g Pa, tan phi_j = %.5f (phi_j = %.2f deg)" % (cj, tj, math.degrees(math.atan(tj))))
-mat = wrapper.RbsmMat(young=young, poisson=poisson, density=gamma / 9.81, frictionAngle=math.atan(tj), cohesion=cj,
-                      tensileStrength=c / math.tan(phi), ductile=args.mode != "raw" and not args.brittle)
+
+
+def crossed_slope_blocks(name, spacing):
+    """The slope region (base, face, crest, right end: a quadrilateral) in rows of *spacing* whose quads follow the
+    face, each quad cut along both diagonals into four triangles: the mesh on which constant-strain elements do
+    not lock in plastic flow (Nagtegaal et al. 1974)."""
+    from yade_rbsm.geometry import polygon_area
+    x_end, L = surface[-1][0], face_length(name)
+    ny, nx = max(1, round(H / spacing)), max(1, round((x_end - 12) / spacing))
+
+    def node(i, j):
+        xf = 12 + L * j / ny  # the face at this row
+        return (xf + (x_end - xf) * i / nx, H * j / ny)
+    blocks = []
+    for j in range(ny):
+        for i in range(nx):
+            q = [node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)]
+            m = (sum(p[0] for p in q) / 4, sum(p[1] for p in q) / 4)
+            for k in range(4):
+                tri = [q[k], q[(k + 1) % 4], m]
+                blocks.append(sl.Block(tri, polygon_area(tri)))
+    area = sum(b.area for b in blocks)
+    return sl.SlopeBlocks(blocks + sl._fixed_blocks(surface, 0.0, 1.0, 1.0), surface, 0.0, area, 0.0, pattern="crossed")
+
+
+if args.mode == "plastic":  # the soil's strength in the blocks; the welded joints between them are the continuum's
+    mat = wrapper.RbsmMat(young=young, poisson=poisson, density=gamma / 9.81, frictionAngle=phi, cohesion=c,
+                          tensileStrength=c / math.tan(phi), planeStrain=True, deformable=True, plastic=True,
+                          penalty=args.penalty, ductile=True)
+else:
+    mat = wrapper.RbsmMat(young=young, poisson=poisson, density=gamma / 9.81, frictionAngle=math.atan(tj), cohesion=cj,
+                          tensileStrength=c / math.tan(phi), ductile=args.mode != "raw" and not args.brittle)
 O.materials.append(mat)
-sb = sl.voronoi_slope_blocks(surface, 0.0, spacing=args.spacing, seed=args.seed, min_distance=0.5 * args.spacing)
+if args.cells != "voronoi" and args.mode != "plastic":
+    ap.error("--cells %s is for --mode plastic" % args.cells)
+if args.cells == "crossed":
+    sb = crossed_slope_blocks(args.slope, args.spacing)
+elif args.cells == "triangles":
+    sb = sl.triangle_slope_blocks(surface, 0.0, spacing=args.spacing)
+else:
+    sb = sl.voronoi_slope_blocks(surface, 0.0, spacing=args.spacing, seed=args.seed, min_distance=0.5 * args.spacing)
 sl.build_scene(sb, mat)
 O.engines = yr.engines(set_dt=True, enlarge=0.01)
 O.dt = 1e-6
@@ -146,7 +186,7 @@ r = strength_reduction(start=args.start, grow=args.grow, rtol=0.02, density_scal
                        calibration=cal, soil=(c, phi) if cal else None, png=args.png or None)
 wall = time.time() - t0
 print("%s; %.0f s wall" % (r, wall))
-print("RESULT " + json.dumps(dict(slope=args.slope, mode=args.mode, k=args.k, cj=cj, tanphij=tj, spacing=args.spacing,
+print("RESULT " + json.dumps(dict(slope=args.slope, mode=args.mode, cells=args.cells, k=args.k, cj=cj, tanphij=tj, spacing=args.spacing,
                                   seed=args.seed,
                                   blocks=len(sb.free), fs=r.fs, lo=r.lo, hi=r.hi, bishop=crit.fs, spencer=spencer.fs,
                                   broken=broken, joints=nj, wall=wall, density_scaling=ds, settle_steps=steps,

@@ -109,8 +109,8 @@ def _kind(sb, kind):
             raise ValueError("fos: kind must be %r or %r (got %r)" % (JOINTED, CONTINUUM, kind))
         return kind, "given"
     pattern = getattr(sb, "pattern", None)
-    if pattern == "voronoi":
-        return CONTINUUM, "Voronoi blocks"
+    if pattern in ("voronoi", "triangles"):  # a continuum cut into cells, not rock along its joints
+        return CONTINUUM, "Voronoi blocks" if pattern == "voronoi" else "triangle blocks"
     if pattern is not None:
         return JOINTED, "%s blocks" % pattern
     return JOINTED, "assumed (no SlopeBlocks given: pass sb= or kind=)"

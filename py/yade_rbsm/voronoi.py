@@ -142,6 +142,16 @@ def voronoi_tessellation(slope, n=None, spacing=None, seed=0, min_distance=0.0, 
     return VoronoiTessellation(blocks, site_pts, list(r["site"]), r["cells"], r["split"], r["dropped"], r["dropped_area"])
 
 
+def triangle_blocks(slope, spacing):
+    """Triangles [[(x, y), ...], ...] (counter-clockwise) tiling the slope polygon, none with an edge longer than
+    *spacing* nor an angle below about 20.7 deg: CGAL's constrained Delaunay refinement. The blocks for plastic
+    deformable soil (RbsmMat.plastic): a band runs through triangles, where Voronoi cells lock."""
+    pts = _slope(slope)
+    if not (isinstance(spacing, (int, float)) and math.isfinite(spacing) and spacing > 0):
+        raise ValueError("triangle_blocks: spacing must be a length > 0 (got %r)" % (spacing,))
+    return [list(t) for t in _tess.triangle_mesh(pts, float(spacing))]
+
+
 def voronoi_blocks(slope, n=None, spacing=None, seed=0, min_distance=0.0, sites=None, min_area=None):
     """Convex counter-clockwise blocks [[(x, y), ...], ...] tiling the slope polygon: the blocks of
     voronoi_tessellation (same arguments), ready for yade_rbsm.polygon2d."""

@@ -109,6 +109,26 @@ def test_voronoi_polygon_and_layers():
         assert b.layer == (0 if below else 1)
 
 
+def test_triangles():
+    """triangle_slope_blocks (the blocks of plastic soil): the same region, cuts and fixed blocks as the Voronoi
+    builder, in triangles (cut along the joints and cracks, where a cut crosses one: then convex polygons)."""
+    sb = S.triangle_slope_blocks(SURF, 0.0, spacing=1.5, joints=[PLANE], cracks=[VCRACK, FOLDED])
+    assert sb.pattern == "triangles" and sb.slope_area == S.region_area(SURF, 0.0)
+    slope = _check_tiling(sb)
+    assert sum(1 for b in slope if len(b.vertices) == 3) > 0.8 * len(slope)
+    assert max(math.dist(b.vertices[i - 1], b.vertices[i]) for b in slope for i in range(len(b.vertices))) <= 1.5 * (1 + 1e-9)
+    for line in (PLANE, VCRACK, FOLDED):
+        _check_follows(slope, line)
+    assert [b.kind for b in sb.blocks if b.fixed] == ["foundation", "wall", "wall"]
+    poly = [(0, 0), (30, 0), (30, 6), (18, 6), (10, 14), (0, 14)]
+    sb = S.triangle_slope_blocks(polygon=poly, spacing=2.0, layers=[([(0, 3), (30, 5)], "weak"), (None, "top")])
+    _check_follows(_check_tiling(sb), [(0, 3), (30, 5)])
+    with pytest.raises(ValueError, match="triangle_slope_blocks: give spacing"):
+        S.triangle_slope_blocks(SURF, 0.0)
+    with pytest.raises(ValueError, match="triangle_slope_blocks: give exactly one of surface"):
+        S.triangle_slope_blocks(SURF, 0.0, spacing=1.0, polygon=poly)
+
+
 def test_columns_stepped_base():
     sb = S.column_blocks(SURF, STEPS, 1.0, block_h=3.0, cracks=[FOLDED])
     slope = _check_tiling(sb)

@@ -240,3 +240,39 @@ def test_sites_that_do_not_fit():
     with pytest.raises(RuntimeError) as e:
         vor.voronoi_blocks(BOX, n=100, min_distance=10.0)
     assert "min_distance" in str(e.value)
+
+
+def min_angle(t):
+    out = []
+    for k in range(3):
+        a, b, c = t[k], t[(k + 1) % 3], t[(k + 2) % 3]
+        u, v = (b[0] - a[0], b[1] - a[1]), (c[0] - a[0], c[1] - a[1])
+        out.append(math.degrees(math.acos(max(-1.0, min(1.0, (u[0] * v[0] + u[1] * v[1]) / (math.hypot(*u) * math.hypot(*v)))))))
+    return min(out)
+
+
+@pytest.mark.parametrize("slope", [BOX, SLOPE, L_SHAPE, COLLINEAR, NOTCHED], ids=["box", "slope", "L", "collinear", "notched"])
+@pytest.mark.parametrize("spacing", [1.5, 4.0])
+def test_triangles_tile_the_slope(slope, spacing):
+    """triangle_blocks (CGAL's Delaunay refinement, the blocks of plastic soil): a conforming tiling of the
+    slope, convex or not, far from the origin or not, no edge longer than the spacing, no angle below 20 deg."""
+    tris = vor.triangle_blocks(slope, spacing)
+    assert all(len(t) == 3 for t in tris)
+    check_tiling(slope, tris)
+    assert max(math.dist(t[k], t[(k + 1) % 3]) for t in tris for k in range(3)) <= spacing * (1 + 1e-9)
+    assert min(min_angle(t) for t in tris) >= 20.0
+    area = float(exact_area(slope))
+    assert len(tris) >= area / (math.sqrt(3) / 4 * spacing ** 2)  # (no triangle larger than the equilateral one)
+
+
+@pytest.mark.parametrize("spacing", [0, -1.0, float("nan"), float("inf"), "1", None])
+def test_triangles_refuse_a_bad_spacing(spacing):
+    with pytest.raises(ValueError) as e:
+        vor.triangle_blocks(SLOPE, spacing)
+    assert "spacing must be a length > 0" in str(e.value)
+
+
+def test_triangles_refuse_a_bad_slope():
+    with pytest.raises(ValueError) as e:
+        vor.triangle_blocks([(0, 0), (2, 2), (2, 0), (0, 2)], 1.0)
+    assert "not a simple polygon" in str(e.value) and "slope" in str(e.value)

@@ -3,6 +3,7 @@
 // std::invalid_argument becomes ValueError, other std::exception RuntimeError (boost::python).
 #include <pkg/rbsm/kernel/ConvexPolygon.hpp>
 #include <pkg/rbsm/tessellation/TraceCut.hpp>
+#include <pkg/rbsm/tessellation/TriangleMesh.hpp>
 #include <pkg/rbsm/tessellation/VoronoiClip.hpp>
 
 #include <boost/python.hpp>
@@ -62,6 +63,13 @@ py::dict voronoiClipPy(const py::object& region, const py::object& sites, double
 	return d;
 }
 
+py::list triangleMeshPy(const py::object& region, double maxEdge)
+{
+	py::list l;
+	for (const auto& t : triangleMesh(toPolygon(region), maxEdge)) l.append(fromPolygon(t));
+	return l;
+}
+
 double unionAreaPy(const py::object& polys)
 {
 	std::vector<Polygon> v;
@@ -117,6 +125,8 @@ BOOST_PYTHON_MODULE(yade_rbsm_tessellation)
 	py::def("cut_by_traces", cutByTracesPy, (py::arg("region"), py::arg("traces"), py::arg("min_area") = 0.0, py::arg("min_width") = 0.0),
 	        "region cut along the traces (segments) into convex CCW blocks, exactly; traces that do not separate blocks are "
 	        "removed (UDEC's rule); faces below min_area or thinner than min_width (2 A / P) merged into a neighbour (convex union): dict(blocks, welds (diagonals cutting non-convex faces), faces, split, merged (sliver places), merged_area, kept_slivers, kept_area).");
+	py::def("triangle_mesh", triangleMeshPy, (py::arg("region"), py::arg("max_edge")),
+	        "Triangles (CCW) tiling region: CGAL's constrained Delaunay refinement, no edge longer than max_edge, no angle below about 20.7 deg.");
 	py::def("union_area", unionAreaPy, py::arg("polygons"), "Area of the union of simple polygons (exact, then rounded).");
 	py::def("polygon_problem", polygonProblemPy, py::arg("polygon"),
 	        "'' if Polygon2D accepts the vertices (convex, CCW, no repeated or collinear vertex), else the problem.");
