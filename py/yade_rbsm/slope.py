@@ -297,8 +297,8 @@ def triangle_slope_blocks(surface=None, base=0.0, spacing=None, polygon=None, jo
     :func:`yade_rbsm.voronoi.triangle_blocks`), then cut along *joints*, *cracks* and the layer tops; the other
     arguments as :func:`voronoi_slope_blocks`. The blocks for a plastic deformable soil
     (``RbsmMat(deformable=True, plastic=True)``): its shear band runs through triangles, where Voronoi cells of
-    six edges lock (Griffiths & Lane's slope: strength reduction 1.33 to 1.37 on triangles, 1.6 to 1.7 on
-    Voronoi cells, against 1.38; docs/manual/guide/deformable.md)."""
+    six edges lock (Griffiths & Lane's slope, Bishop 1.382: strength reduction 1.409 on 1 m triangles, 1.712 on
+    1 m Voronoi cells; docs/manual/guide/deformable.md)."""
     who = "triangle_slope_blocks"
     if spacing is None:
         raise ValueError("%s: give spacing, the longest edge of a triangle [m]" % who)
