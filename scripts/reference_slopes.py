@@ -13,11 +13,21 @@ SLOPES = {
     "30": (30.0, 20.0, 25.0, "30°, 0.1, 25°"),
     "45": (45.0, 10.0, 40.0, "45°, 0.05, 40°"),
 }
+# Undrained (phi = 0): Griffiths & Lane's 2:1 slope with c_u / gamma H = 0.25 on a firm base at the toe (Taylor's
+# depth factor D = 1); kept apart from SLOPES, which the drained tables iterate over.
+UNDRAINED = {
+    "taylor": (math.degrees(math.atan(0.5)), 50.0, 0.0, "26.6° (2:1), c_u/γH 0.25, φ 0 (Taylor, D = 1)"),
+}
+
+
+def case(name):
+    """(face angle [deg], c' [kPa], phi' [deg], label) of a drained or undrained slope."""
+    return SLOPES[name] if name in SLOPES else UNDRAINED[name]
 
 
 def face_length(name):
     """Horizontal length of the face [m]."""
-    return H / math.tan(math.radians(SLOPES[name][0]))
+    return H / math.tan(math.radians(case(name)[0]))
 
 
 def ground(name):
@@ -35,5 +45,5 @@ def search(name):
 def soil(name):
     """The limit_equilibrium.Slope of the slope (kPa, kN/m3, degrees)."""
     from yade_rbsm import limit_equilibrium as le
-    beta, c, phi, _ = SLOPES[name]
+    beta, c, phi, _ = case(name)
     return le.Slope(ground(name), le.Layer(c=c, phi=phi, gamma=GAMMA))

@@ -36,9 +36,9 @@ from yade_rbsm.strength_reduction import strength_reduction
 
 # (under yade -x, __file__ is yade's own script: the scripts folder from the package's place)
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(yr.__file__)))), "scripts"))
-from reference_slopes import GAMMA, H, SLOPES, face_length, ground, search, soil as soil_of  # noqa: E402
+from reference_slopes import GAMMA, H, SLOPES, UNDRAINED, case, face_length, ground, search, soil as soil_of  # noqa: E402
 ap = argparse.ArgumentParser()
-ap.add_argument("--slope", choices=sorted(SLOPES), default="gl")
+ap.add_argument("--slope", choices=sorted(SLOPES) + sorted(UNDRAINED), default="gl")
 ap.add_argument("--mode", choices=["raw", "ductile", "calibrated", "joints", "table", "stress", "plastic"], default="raw")
 ap.add_argument("--cells", choices=["voronoi", "triangles", "crossed"], default="voronoi", help="--mode plastic: the blocks")
 ap.add_argument("--penalty", type=float, default=10.0, help="--mode plastic: RbsmMat.penalty of the welded joints")
@@ -65,8 +65,9 @@ args = ap.parse_args(sys.argv[1:])
 
 gamma = GAMMA * 1e3  # N/m3 (the RBSM's SI units)
 young, poisson = args.young, args.poisson
-_, c_kpa, phi_deg, _ = SLOPES[args.slope]
+_, c_kpa, phi_deg, _ = case(args.slope)
 c, phi = c_kpa * 1e3, math.radians(phi_deg)
+tension = c / math.tan(phi) if phi > 0 else 10 * c  # the apex; undrained: no cut-off the slope reaches
 surface = ground(args.slope)
 t0 = time.time()
 
@@ -141,11 +142,11 @@ def crossed_slope_blocks(name, spacing):
 
 if args.mode == "plastic":  # the soil's strength in the blocks; the welded joints between them are the continuum's
     mat = wrapper.RbsmMat(young=young, poisson=poisson, density=gamma / 9.81, frictionAngle=phi, cohesion=c,
-                          tensileStrength=c / math.tan(phi), planeStrain=True, deformable=True, plastic=True,
+                          tensileStrength=tension, planeStrain=True, deformable=True, plastic=True,
                           penalty=args.penalty, ductile=True)
 else:
     mat = wrapper.RbsmMat(young=young, poisson=poisson, density=gamma / 9.81, frictionAngle=math.atan(tj), cohesion=cj,
-                          tensileStrength=c / math.tan(phi), ductile=args.mode != "raw" and not args.brittle)
+                          tensileStrength=tension, ductile=args.mode != "raw" and not args.brittle)
 O.materials.append(mat)
 if args.cells != "voronoi" and args.mode != "plastic":
     ap.error("--cells %s is for --mode plastic" % args.cells)
