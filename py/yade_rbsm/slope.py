@@ -331,7 +331,7 @@ class _Region:
                                                                               foundation, wall, who)
             poly = slope_polygon(surf, base)
             slope_area = region_area(surf, base)
-        self.poly, self.surf, self.base, self.slope_area = poly, surf, base, slope_area
+        self.who, self.poly, self.surf, self.base, self.slope_area = who, poly, surf, base, slope_area
         self.joints, self.cracks, self.layers, self.foundation, self.wall = joints, cracks, layers, foundation, wall
 
     def blocks(self, pieces, min_area, dropped, pattern, sets, traces):
@@ -351,10 +351,9 @@ class _Region:
                 blocks.append(Block(f, polygon_area(f), True, "foundation"))
         else:
             blocks += _fixed_blocks(self.surf, self.base, self.foundation, self.wall)
-        who = "%s_slope_blocks" % ("voronoi" if pattern == "voronoi" else "triangle")
         return _with_sets(SlopeBlocks(blocks, self.surf, self.base, self.slope_area, dropped, None, self.joints,
                                       cracks=self.cracks, layers=self.layers, polygon=self.poly, pattern=pattern),
-                          sets, traces, who)
+                          sets, traces, self.who)
 
 
 def _with_sets(sb, sets, traces, who):

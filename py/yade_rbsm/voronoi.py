@@ -124,7 +124,7 @@ def voronoi_tessellation(slope, n=None, spacing=None, seed=0, min_distance=0.0, 
     if len(given) != 1:
         raise ValueError("give exactly one of n, spacing, sites (got %s)" % (", ".join(given) or "none"))
     if spacing is not None:
-        if not (isinstance(spacing, (int, float)) and math.isfinite(spacing) and spacing > 0):
+        if isinstance(spacing, bool) or not (isinstance(spacing, (int, float)) and math.isfinite(spacing) and spacing > 0):
             raise ValueError("spacing must be a finite number > 0, got %r" % (spacing,))
         n = max(1, int(round(area / spacing ** 2)))
     if sites is not None:
@@ -147,7 +147,7 @@ def triangle_blocks(slope, spacing):
     *spacing* nor an angle below about 20.7 deg: CGAL's constrained Delaunay refinement. The blocks for plastic
     deformable soil (RbsmMat.plastic): a band runs through triangles, where Voronoi cells lock."""
     pts = _slope(slope)
-    if not (isinstance(spacing, (int, float)) and math.isfinite(spacing) and spacing > 0):
+    if isinstance(spacing, bool) or not (isinstance(spacing, (int, float)) and math.isfinite(spacing) and spacing > 0):
         raise ValueError("triangle_blocks: spacing must be a length > 0 (got %r)" % (spacing,))
     return [list(t) for t in _tess.triangle_mesh(pts, float(spacing))]
 

@@ -265,7 +265,7 @@ def test_triangles_tile_the_slope(slope, spacing):
     assert len(tris) >= area / (math.sqrt(3) / 4 * spacing ** 2)  # (no triangle larger than the equilateral one)
 
 
-@pytest.mark.parametrize("spacing", [0, -1.0, float("nan"), float("inf"), "1", None])
+@pytest.mark.parametrize("spacing", [0, -1.0, float("nan"), float("inf"), "1", None, True])
 def test_triangles_refuse_a_bad_spacing(spacing):
     with pytest.raises(ValueError) as e:
         vor.triangle_blocks(SLOPE, spacing)

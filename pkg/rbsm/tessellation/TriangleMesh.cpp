@@ -35,7 +35,7 @@ std::vector<Polygon> triangleMesh(const Polygon& region, double maxEdge)
 		const Point& b = ccw[(i + 1) % ccw.size()];
 		cdt.insert_constraint(K::Point_2(a[0], a[1]), K::Point_2(b[0], b[1]));
 	}
-	// 0.125: B = 1/(2 sin θ) bound on circumradius / shortest edge, θ ≈ 20.7°, the largest that always terminates
+	// 0.125: the least sin² of a triangle's smallest angle (20.7°), the bound up to which Ruppert's refinement terminates
 	CGAL::refine_Delaunay_mesh_2(cdt, Criteria(0.125, maxEdge));
 	std::vector<Polygon> out;
 	for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
