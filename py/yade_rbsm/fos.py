@@ -171,6 +171,7 @@ def fos(sb=None, kind=None, d_fail=None, max_steps=None, patience=4, tol=1e-4, r
                                   verbose=verbose, reference_rotation=reference_rotation)
     # the blocks' stresses are read in the state given (strength reduction leaves it as it found it)
     stress_based = _stress_circle(sb, ids, size) if circle and sb is not None else None
+    toppling = _goodman_bray(sb) if getattr(sb, "pattern", None) == "columns" else None
     sr, halved = reduce(1.0, d_fail), 0
     # A stable end that moved more than half of d_fail and stopped (a jointed slope that slides, then jams) makes
     # the FS d_fail's; halving d_fail homes in on the onset of sliding (the landslide example: 0.872, 0.859,
@@ -193,6 +194,15 @@ def fos(sb=None, kind=None, d_fail=None, max_steps=None, patience=4, tol=1e-4, r
     if circle and sb is not None:
         estimates["Bishop, critical circle (blocks' material)"] = _bishop(sb, ids)
         estimates["stress-based, critical circle (blocks' stresses)"] = stress_based
+    if toppling is not None:
+        estimates["Goodman & Bray, toppling (rigid columns)"] = toppling
+        gb = toppling["fs"]
+        if gb is not None and sr.mechanism and "toppling" in sr.mechanism and sr.fs < 0.95 * gb:
+            warnings.append("strength reduction fails by toppling at %.3f, %.0f %% below Goodman & Bray's rigid columns "
+                            "(%.3f): elastic joints let a column turn before its weight bears on its base corner, and "
+                            "the gap closes as the joints stiffen, about as kn^(-1/3) (the manual's factor-of-safety "
+                            "guide: 1.14 to 2.53 for E 1 GPa to 100 TPa on Goodman & Bray's two columns, 2.57)"
+                            % (sr.fs, 100 * (1 - sr.fs / gb), gb))
     fs, method = sr.fs, "strength reduction"
     if kind == JOINTED:
         recommendation = ("For jointed rock the joints are the rock mass's discontinuities and rigid blocks model "
@@ -268,6 +278,42 @@ def _bishop(sb, ids):
         return dict(fs=None, note=str(e))
     return dict(fs=r.fs, note="c %.3g kPa, phi %.1f deg of the blocks' material, %s%s" % (
         mat.cohesion / 1e3, math.degrees(mat.frictionAngle), r.circle, "".join("; WARNING: " + w for w in r.warnings)))
+
+
+def _goodman_bray(sb):
+    """Goodman & Bray's FS of a column slope (toppling.columns: flat-topped columns, one block each) at the joints'
+    current friction (base joints: column on the foundation; sides: column on column) and the scene's gravity;
+    a note instead where their method does not apply."""
+    from yade import O
+    from . import omega, toppling
+    try:
+        cols = toppling.columns(sb)
+    except ValueError as e:
+        return dict(fs=None, note="not Goodman & Bray's geometry: %s" % e)
+    toe = -1 if sb.surface[0][1] < sb.surface[-1][1] else 1  # the direction of the toe along x
+    gx, gy = omega.newton(O).gravity[0], omega.newton(O).gravity[1]
+    psi = math.atan2(toe * gx, -gy)
+    if not 0 < psi < 0.5 * math.pi:
+        return dict(fs=None, note="gravity (%.3g, %.3g) does not lean towards the toe: Goodman & Bray's columns need "
+                                  "it tilted by the base planes' dip" % (gx, gy))
+    free = set(b.id for b in sb.free)
+    tan = {"base": set(), "side": set()}
+    for I in omega.joints(O):
+        if I.id1 in free or I.id2 in free:
+            if I.phys.cohesion > 0 or I.phys.tensileStrength > 0:
+                return dict(fs=None, note="joint %d-%d has cohesion or tensile strength: Goodman & Bray's joints are "
+                                          "frictional" % (I.id1, I.id2))
+            tan["side" if I.id1 in free and I.id2 in free else "base"].add(I.phys.tanPhi)
+    if len(tan["base"]) != 1 or len(tan["side"]) > 1:
+        return dict(fs=None, note="the joints' friction is not one value on the bases and one on the sides")
+    tb = tan["base"].pop()
+    ts = tan["side"].pop() if tan["side"] else tb
+    try:
+        fs = toppling.goodman_bray_fs(cols, psi, math.atan(tb), math.atan(ts))
+    except ValueError as e:
+        return dict(fs=None, note=str(e))
+    return dict(fs=fs, note="%d columns, base planes dipping %.2f deg, phi %.1f deg (bases) and %.1f deg (sides)" % (
+        len(cols), math.degrees(psi), math.degrees(math.atan(tb)), math.degrees(math.atan(ts))))
 
 
 def _stress_circle(sb, ids, size):

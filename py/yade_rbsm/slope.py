@@ -190,7 +190,9 @@ def brick_blocks(surface, base, brick_w, brick_h, joints=(), crack=None, foundat
 
 def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), layers=(), foundation=1.0, wall=1.0,
                   min_area=None, sets=(), traces=()):
-    """Columns for toppling: the slope under the ground polyline *surface* (strictly increasing x)
+    """Columns for toppling: the slope under the ground polyline *surface* (increasing x; a repeated x is a
+    riser, a vertical step of the ground between two columns' flat tops, as in Goodman & Bray's geometry:
+    :func:`yade_rbsm.toppling.columns` reads such columns back for the limit-equilibrium comparison)
     cut by vertical joints every *width* from the left end (and at every kink of the ground and of
     the base) and, if *block_h* is given, by horizontal cross joints at ``min(base) + k·block_h``
     (aligned from column to column). *base*: a number (flat base) or a stepped base polyline from the
@@ -200,7 +202,7 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
     and the walls stand on it at both ends. *joints*, *cracks*, *layers*, *sets*, *traces*: as in
     :func:`brick_blocks` (cut with :func:`cut_polygons`)."""
     who = "column_blocks"
-    surf = monotone("%s: surface" % who, surface)
+    surf = _with_risers("%s: surface" % who, surface)
     x0, xn = surf[0][0], surf[-1][0]
     if isinstance(base, (int, float)) and not isinstance(base, bool):
         b0 = _number("%s: base" % who, base, positive=False)
@@ -212,7 +214,7 @@ def column_blocks(surface, base, width, block_h=None, joints=(), cracks=(), laye
                              % (who, x0, xn))
     ymin = min(y for _, y in basel)
     surf, _, joints, cracks, layers, foundation, wall = _common_args(surf, ymin - 1e-9 * (1 + abs(ymin)), joints,
-                                                                     cracks, layers, foundation, wall, who)
+                                                                     cracks, layers, foundation, wall, who, risers=True)
     width = _number("%s: width" % who, width)
     if block_h is not None:
         block_h = _number("%s: block_h" % who, block_h)
@@ -470,8 +472,8 @@ def _fixed_blocks(surf, base, foundation, wall):
     return out
 
 
-def _common_args(surface, base, joints, cracks, layers, foundation, wall, who):
-    surf = monotone("%s: surface" % who, surface)
+def _common_args(surface, base, joints, cracks, layers, foundation, wall, who, risers=False):
+    surf = _with_risers("%s: surface" % who, surface) if risers else monotone("%s: surface" % who, surface)
     base = _number("%s: base" % who, base, positive=False)
     _check_ground_above(surf, base, who)
     joints = [points("%s: joints[%d]" % (who, k), j, 2) for k, j in enumerate(joints)]
@@ -484,6 +486,19 @@ def _common_args(surface, base, joints, cracks, layers, foundation, wall, who):
             raise ValueError("%s: %s misses the slope" % (who, ("joints[%d]" % k) if k < len(joints)
                                                            else ("cracks[%d]" % (k - len(joints)))))
     return surf, base, joints, cracks, layers, foundation, wall
+
+
+def _with_risers(name, surface):
+    """A ground polyline with x non-decreasing whose repeated x are single risers (a vertical step between two
+    columns' flat tops), none at an end; ValueError naming *name* otherwise."""
+    surf = monotone(name, surface, strict=False)
+    if surf[1][0] == surf[0][0] or surf[-2][0] == surf[-1][0]:
+        raise ValueError("%s: a riser at an end (x = %g): the ground must start and end with a segment along x"
+                         % (name, surf[0][0] if surf[1][0] == surf[0][0] else surf[-1][0]))
+    for a, b, c in zip(surf[:-2], surf[1:-1], surf[2:]):
+        if a[0] == b[0] == c[0]:
+            raise ValueError("%s: more than one riser at x = %g (give it as one vertical segment)" % (name, a[0]))
+    return surf
 
 
 def _meets_region(line, surf, base):

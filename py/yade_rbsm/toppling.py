@@ -22,7 +22,7 @@ import math
 from dataclasses import dataclass, field
 from typing import List
 
-__all__ = ["Column", "ToppleResult", "goodman_bray", "goodman_bray_fs"]
+__all__ = ["Column", "ToppleResult", "columns", "goodman_bray", "goodman_bray_fs"]
 
 
 @dataclass
@@ -100,3 +100,46 @@ def goodman_bray_fs(columns, psi, phi_base, phi_side=None, unit_weight=1.0, rtol
         else:
             lo = mid
     return math.sqrt(lo * hi)
+
+
+def columns(blocks, toe=None):
+    """Goodman & Bray's columns of a slope built by :func:`yade_rbsm.slope.column_blocks` (*blocks*, its
+    SlopeBlocks) on a stepped ground: each free column one rectangle with a flat base and a flat top, the
+    columns side by side; listed from the toe up. *toe*: "left" or "right" (default: the end where the ground
+    is lower). The model's frame is the columns' (gravity tilted by psi towards the toe). ValueError naming the
+    column where the blocks are not Goodman & Bray's geometry (a sloping top: give the ground as flat tops and
+    risers; cross joints; a gap)."""
+    slope = [b for b in blocks.blocks if not b.fixed]
+    if not slope:
+        raise ValueError("columns: no free blocks")
+    ground = blocks.surface
+    if toe is None:
+        if ground[0][1] == ground[-1][1]:
+            raise ValueError("columns: the ground is as high at both ends; say which end is the toe (toe='left' or "
+                             "'right')")
+        toe = "left" if ground[0][1] < ground[-1][1] else "right"
+    if toe not in ("left", "right"):
+        raise ValueError("columns: toe must be 'left' or 'right' (got %r)" % (toe,))
+    by_x = {}
+    for b in slope:
+        xs = [v[0] for v in b.vertices]
+        by_x.setdefault((min(xs), max(xs)), []).append(b)
+    spans = sorted(by_x)
+    out = []
+    for k, (xa, xb) in enumerate(spans):
+        name = "columns: column %d (x %g to %g)" % (k + 1, xa, xb)
+        if len(by_x[(xa, xb)]) > 1:
+            raise ValueError("%s is %d blocks: Goodman & Bray's columns are one rigid block each (no cross joints)"
+                             % (name, len(by_x[(xa, xb)])))
+        if k and spans[k - 1][1] != xa:  # (a cut across columns makes blocks that overlap in x, or leave gaps)
+            raise ValueError("%s does not stand beside the column before it (x %g to %g): not columns side by side"
+                             % (name, spans[k - 1][0], spans[k - 1][1]))
+        v = by_x[(xa, xb)][0].vertices
+        bottom = [y for x, y in v if y == min(yy for _, yy in v)]
+        ys = sorted(set(y for _, y in v))
+        if len(v) != 4 or sorted(set(x for x, _ in v)) != [xa, xb] or len(ys) != 2:
+            what = "top" if len(bottom) == 2 else "base"
+            raise ValueError("%s: its %s is not flat (Goodman & Bray's columns are rectangles: give the ground as flat "
+                             "tops and risers, the base as steps)" % (name, what))
+        out.append(Column(ys[0], ys[1], xb - xa))
+    return out if toe == "left" else out[::-1]

@@ -144,6 +144,29 @@ def test_columns_stepped_base():
     assert sum(b.kind == "foundation" for b in fixed) == 3 + 2 and sum(b.kind == "wall" for b in fixed) == 2
 
 
+# Goodman & Bray's geometry: flat-topped columns, the ground stepping up by a riser at each column's side
+STEPPED_GROUND = [(0, 3), (2, 3), (2, 9.5), (4, 9.5), (4, 12), (6, 12)]
+STEPPED_BASE = [(0, 0), (2, 0), (2, 0.5), (4, 0.5), (4, 1), (6, 1)]
+
+
+def test_columns_stepped_ground():
+    """column_blocks on a ground with risers (repeated x): every column a rectangle with a flat top at its own
+    height, the riser a face of the taller column and open to the sky beside the lower one."""
+    sb = S.column_blocks(STEPPED_GROUND, STEPPED_BASE, 2.0, wall=0.0)
+    slope = _check_tiling(sb)
+    assert sb.slope_area == pytest.approx(2 * 3 + 2 * 9 + 2 * 11, rel=1e-15)
+    rects = sorted((min(v[0] for v in b.vertices), min(v[1] for v in b.vertices), max(v[0] for v in b.vertices),
+                    max(v[1] for v in b.vertices), len(b.vertices)) for b in slope)
+    assert rects == [(0, 0, 2, 3, 4), (2, 0.5, 4, 9.5, 4), (4, 1, 6, 12, 4)]
+    for ground, match in (([(0, 3), (0, 4), (2, 4), (6, 12)], "riser at an end"),
+                          ([(0, 3), (2, 3), (2, 5), (2, 9.5), (6, 12)], "more than one riser at x = 2"),
+                          ([(0, 3), (2, 3), (1, 4), (6, 12)], "non-decreasingly")):
+        with pytest.raises(ValueError, match=match):
+            S.column_blocks(ground, 0.0, 2.0)
+    with pytest.raises(ValueError, match="x must be strictly increasing"):  # (risers are the columns' only)
+        S.brick_blocks(STEPPED_GROUND, 0.0, 2.0, 1.0)
+
+
 def test_bricks_any_crack_and_layers():
     sb = S.brick_blocks(SURF, 0.0, 2.0, 1.0, joints=[PLANE], cracks=[VCRACK, FOLDED], layers=LAYERS)
     slope = _check_tiling(sb)

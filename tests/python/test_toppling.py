@@ -59,3 +59,30 @@ def test_stable_crest_toppling_face_and_more_friction_holds_more():
     assert 0 < f35 < f45
     # the factor is on tan(phi): at phi reduced by it, the toe needs no force
     assert goodman_bray(cols, psi, math.atan(math.tan(math.radians(45)) / f45 * 1.001)).P0 == pytest.approx(0, abs=1e-3)
+
+
+def _slope_module():
+    import importlib.util
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "py", "yade_rbsm", "slope.py")
+    spec = importlib.util.spec_from_file_location("rbsm_slope_geom", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_columns_read_back_from_the_builder():
+    """toppling.columns: Goodman & Bray's columns of a slope built by column_blocks on a stepped ground (flat tops,
+    risers between them), from the toe up; refused, naming the column, where they are not Goodman & Bray's."""
+    from yade_rbsm.toppling import columns
+    S = _slope_module()
+    ground = [(0, 3), (2, 3), (2, 9.5), (4, 9.5), (4, 12), (6, 12)]
+    base = [(0, 0), (2, 0), (2, 0.5), (4, 0.5), (4, 1), (6, 1)]
+    assert columns(S.column_blocks(ground, base, 2.0)) == [Column(0, 3, 2), Column(0.5, 9.5, 2), Column(1, 12, 2)]
+    mirrored = S.column_blocks([(-x, y) for x, y in reversed(ground)], [(-x, y) for x, y in reversed(base)], 2.0)
+    assert columns(mirrored) == [Column(0, 3, 2), Column(0.5, 9.5, 2), Column(1, 12, 2)]  # toe on the right
+    with pytest.raises(ValueError, match=r"column 2 \(x 2 to 4\): its top is not flat"):
+        columns(S.column_blocks([(0, 3), (2, 3), (4, 9.5), (6, 12)], base, 2.0))
+    with pytest.raises(ValueError, match=r"column 1 \(x 0 to 2\) is 2 blocks"):
+        columns(S.column_blocks(ground, base, 2.0, block_h=2.0))
+    with pytest.raises(ValueError, match="toe"):
+        columns(S.column_blocks([(0, 3), (2, 3), (2, 9.5), (4, 9.5), (4, 3), (6, 3)], 0.0, 2.0))
