@@ -492,6 +492,9 @@ def _with_risers(name, surface):
     """A ground polyline with x non-decreasing whose repeated x are single risers (a vertical step between two
     columns' flat tops), none at an end; ValueError naming *name* otherwise."""
     surf = monotone(name, surface, strict=False)
+    surf = [p for k, p in enumerate(surf) if k == 0 or p != surf[k - 1]]  # (a riser of no height is none)
+    if len(surf) < 2:
+        raise ValueError("%s: one point" % name)
     if surf[1][0] == surf[0][0] or surf[-2][0] == surf[-1][0]:
         raise ValueError("%s: a riser at an end (x = %g): the ground must start and end with a segment along x"
                          % (name, surf[0][0] if surf[1][0] == surf[0][0] else surf[-1][0]))

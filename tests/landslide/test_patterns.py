@@ -158,6 +158,8 @@ def test_columns_stepped_ground():
     rects = sorted((min(v[0] for v in b.vertices), min(v[1] for v in b.vertices), max(v[0] for v in b.vertices),
                     max(v[1] for v in b.vertices), len(b.vertices)) for b in slope)
     assert rects == [(0, 0, 2, 3, 4), (2, 0.5, 4, 9.5, 4), (4, 1, 6, 12, 4)]
+    level = S.column_blocks([(0, 3), (2, 3), (2, 3), (4, 3.5)], 0.0, 2.0)  # a riser of no height: none
+    assert [len(b.vertices) for b in level.blocks if b.kind == "slope"] == [4, 4]
     for ground, match in (([(0, 3), (0, 4), (2, 4), (6, 12)], "riser at an end"),
                           ([(0, 3), (2, 3), (2, 5), (2, 9.5), (6, 12)], "more than one riser at x = 2"),
                           ([(0, 3), (2, 3), (1, 4), (6, 12)], "non-decreasingly")):
