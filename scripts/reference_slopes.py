@@ -1,7 +1,7 @@
 # The homogeneous c'-phi' slopes of issue 21 (docs/slope_factor_of_safety.md), shared by
-# scripts/slope_fs_study.py (RBSM), scripts/fe_stress_fs.py (finite elements) and
-# scripts/slope_stress_fs_table.py: H = 10 m, gamma = 20 kN/m3, a firm base at toe level (y = 0), the face
-# rising from x = 12 m, a 20 m crest. Plain Python, no YADE.
+# scripts/slope_fs_study.py (RBSM), scripts/fe_stress_fs.py (finite elements), scripts/slope_stress_fs_table.py
+# and the tests' slope scenes: H = 10 m, gamma = 20 kN/m3, a firm base at toe level (y = 0), the face rising from
+# x = 12 m, a 20 m crest. Plain Python; plastic_soil() alone needs YADE.
 import math
 
 H = 10.0  # m
@@ -47,3 +47,15 @@ def soil(name):
     from yade_rbsm import limit_equilibrium as le
     beta, c, phi, _ = case(name)
     return le.Slope(ground(name), le.Layer(c=c, phi=phi, gamma=GAMMA))
+
+
+def plastic_soil(name, penalty=10.0, young=100e6, poisson=0.3, label=""):
+    """The slope's soil as plastic deformable blocks (issue 39; SI units): its c', phi' in the blocks, plane strain,
+    welded joints of RbsmMat.penalty, ductile; the tension cut-off at the Mohr-Coulomb apex c'/tan phi' (undrained:
+    10 c_u, beyond any tension the slope reaches)."""
+    from yade import wrapper
+    _, c_kpa, phi_deg, _ = case(name)
+    c, phi = c_kpa * 1e3, math.radians(phi_deg)
+    return wrapper.RbsmMat(young=young, poisson=poisson, density=GAMMA * 1e3 / 9.81, frictionAngle=phi, cohesion=c,
+                           tensileStrength=c / math.tan(phi) if phi > 0 else 10 * c, planeStrain=True, deformable=True,
+                           plastic=True, penalty=penalty, ductile=True, label=label)

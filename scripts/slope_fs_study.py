@@ -36,7 +36,7 @@ from yade_rbsm.strength_reduction import strength_reduction
 
 # (under yade -x, __file__ is yade's own script: the scripts folder from the package's place)
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(yr.__file__)))), "scripts"))
-from reference_slopes import GAMMA, H, SLOPES, UNDRAINED, case, face_length, ground, search, soil as soil_of  # noqa: E402
+from reference_slopes import GAMMA, H, SLOPES, UNDRAINED, case, face_length, ground, plastic_soil, search, soil as soil_of  # noqa: E402
 ap = argparse.ArgumentParser()
 ap.add_argument("--slope", choices=sorted(SLOPES) + sorted(UNDRAINED), default="gl")
 ap.add_argument("--mode", choices=["raw", "ductile", "calibrated", "joints", "table", "stress", "plastic"], default="raw")
@@ -55,7 +55,9 @@ ap.add_argument("--table-key", default="large", help="--mode table: which fit, '
 ap.add_argument("--start", type=float, default=1.4, help="first trial F")
 ap.add_argument("--grow", type=float, default=1.2, help="trial F growth until a failure")
 ap.add_argument("--spacing", type=float, default=1.0, help="Voronoi spacing [m]")
-ap.add_argument("--seed", type=int, default=1)
+ap.add_argument("--seed", type=int, default=1, help="Voronoi sites' seed")
+ap.add_argument("--mesh-seed", type=int, default=None, help="--cells triangles: the mesh's interior vertices moved at "
+                "random by this seed (default: CGAL's mesh as made)")
 ap.add_argument("--png", default="", help="path prefix of the mechanism drawings")
 ap.add_argument("--cache", default=None, help="calibration cache directory")
 ap.add_argument("--no-density-scaling", action="store_true", help="settle and reduce at the dynamic step")
@@ -141,9 +143,7 @@ def crossed_slope_blocks(name, spacing):
 
 
 if args.mode == "plastic":  # the soil's strength in the blocks; the welded joints between them are the continuum's
-    mat = wrapper.RbsmMat(young=young, poisson=poisson, density=gamma / 9.81, frictionAngle=phi, cohesion=c,
-                          tensileStrength=tension, planeStrain=True, deformable=True, plastic=True,
-                          penalty=args.penalty, ductile=True)
+    mat = plastic_soil(args.slope, penalty=args.penalty, young=young, poisson=poisson)
 else:
     mat = wrapper.RbsmMat(young=young, poisson=poisson, density=gamma / 9.81, frictionAngle=math.atan(tj), cohesion=cj,
                           tensileStrength=tension, ductile=args.mode != "raw" and not args.brittle)
@@ -153,7 +153,7 @@ if args.cells != "voronoi" and args.mode != "plastic":
 if args.cells == "crossed":
     sb = crossed_slope_blocks(args.slope, args.spacing)
 elif args.cells == "triangles":
-    sb = sl.triangle_slope_blocks(surface, 0.0, spacing=args.spacing)
+    sb = sl.triangle_slope_blocks(surface, 0.0, spacing=args.spacing, seed=args.mesh_seed)
 else:
     sb = sl.voronoi_slope_blocks(surface, 0.0, spacing=args.spacing, seed=args.seed, min_distance=0.5 * args.spacing)
 sl.build_scene(sb, mat)
@@ -184,7 +184,8 @@ if args.mode == "stress":
 # unscaled, the step is about 3 x shorter: the same simulated time per trial takes 3 x the steps
 r = strength_reduction(start=args.start, grow=args.grow, rtol=0.02, density_scaling=ds,
                        max_steps=args.max_steps if ds else 3 * args.max_steps, check=200, d_fail=args.d_fail,
-                       calibration=cal, soil=(c, phi) if cal else None, png=args.png or None)
+                       calibration=cal, soil=(c, phi) if cal else None, png=args.png or None,
+                       png_line=crit.circle.polyline() if args.png else None)
 wall = time.time() - t0
 print("%s; %.0f s wall" % (r, wall))
 print("RESULT " + json.dumps(dict(slope=args.slope, mode=args.mode, cells=args.cells, k=args.k, cj=cj, tanphij=tj, spacing=args.spacing,

@@ -354,6 +354,11 @@ class Circle:
         with np.errstate(invalid="ignore"):
             return self.yc - np.sqrt(d)
 
+    def polyline(self, n=64):
+        """The lower half as *n* + 1 points [(x, y)] from left to right (to draw it)."""
+        return [(self.xc + self.R * math.cos(math.pi * (1 + k / n)), self.yc + self.R * math.sin(math.pi * (1 + k / n)))
+                for k in range(n + 1)]
+
     def __str__(self):
         return f"circle(xc={self.xc:.3f}, yc={self.yc:.3f}, R={self.R:.3f})"
 

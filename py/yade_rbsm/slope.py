@@ -293,19 +293,21 @@ def voronoi_slope_blocks(surface=None, base=0.0, n=None, spacing=None, seed=0, m
 
 
 def triangle_slope_blocks(surface=None, base=0.0, spacing=None, polygon=None, joints=(), cracks=(), layers=(),
-                          foundation=1.0, wall=1.0, min_area=None, sets=(), traces=()):
+                          foundation=1.0, wall=1.0, min_area=None, sets=(), traces=(), seed=None):
     """Triangles tiling the slope under the ground polyline *surface* above *base* (or the simple polygon
     *polygon*), no edge longer than *spacing* and no angle below about 20.7 deg (CGAL's Delaunay refinement,
     :func:`yade_rbsm.voronoi.triangle_blocks`), then cut along *joints*, *cracks* and the layer tops; the other
     arguments as :func:`voronoi_slope_blocks`. The blocks for a plastic deformable soil
     (``RbsmMat(deformable=True, plastic=True)``): its shear band runs through triangles, where Voronoi cells of
     six edges lock (Griffiths & Lane's slope, Bishop 1.382: strength reduction 1.409 on 1 m triangles, 1.712 on
-    1 m Voronoi cells; docs/manual/guide/deformable.md)."""
+    1 m Voronoi cells; docs/manual/guide/deformable.md). *seed*: None, the mesh CGAL makes; an integer, that mesh
+    with its interior vertices moved at random (:func:`yade_rbsm.voronoi.jitter_mesh`): meshes of one spacing
+    whose results scatter as a user's would."""
     who = "triangle_slope_blocks"
     if spacing is None:
         raise ValueError("%s: give spacing, the longest edge of a triangle [m]" % who)
     region = _Region(surface, base, polygon, joints, cracks, layers, foundation, wall, who)
-    triangles = _sibling("voronoi").triangle_blocks(region.poly, spacing)
+    triangles = _sibling("voronoi").triangle_blocks(region.poly, spacing, seed=seed)
     return region.blocks(triangles, min_area, 0.0, "triangles", sets, traces)
 
 

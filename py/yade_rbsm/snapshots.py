@@ -57,9 +57,10 @@ def block_values(field, O=None):
     return out
 
 
-def snapshot(path, title="", vmax=None, O=None, slip=None, dpi=110, field="displacement"):
+def snapshot(path, title="", vmax=None, O=None, slip=None, dpi=110, field="displacement", values=None, label=None):
     """Write a PNG of the scene to *path*; *slip*: optional polyline drawn dashed; *field*: what colours the
-    free blocks, "displacement" or "plasticShear" (block_values). Returns path."""
+    free blocks, "displacement" or "plasticShear" (block_values), or *values* ({body id: value}, the colour bar
+    named *label*). Returns path."""
     if O is None:
         from yade import O
     import matplotlib
@@ -70,8 +71,9 @@ def snapshot(path, title="", vmax=None, O=None, slip=None, dpi=110, field="displ
     polys = block_polygons(O)
     free = [p for p in polys if not p[3]]
     fixed = [p for p in polys if p[3]]
-    values = block_values(field, O) if field != "displacement" else None
-    disp = [p[2] if values is None else values[p[0]] for p in free]
+    if values is None and field != "displacement":
+        values = block_values(field, O)
+    disp = [p[2] if values is None else values.get(p[0], 0.0) for p in free]
     vmax = vmax if vmax is not None else max(max(disp, default=0.0), 1e-6)
     # fixed margins instead of tight_layout, which measured every tick label and took half of the time
     fig, ax = plt.subplots(figsize=(9, 5), gridspec_kw=dict(left=0.07, right=0.94, bottom=0.1, top=0.93))
@@ -93,7 +95,7 @@ def snapshot(path, title="", vmax=None, O=None, slip=None, dpi=110, field="displ
     ax.set_aspect("equal")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
-    fig.colorbar(pc, ax=ax, label=FIELDS[field], shrink=0.8, fraction=0.05, pad=0.02)
+    fig.colorbar(pc, ax=ax, label=label or FIELDS[field], shrink=0.8, fraction=0.05, pad=0.02)
     ax.set_title(title + ("  (red: failed joints, %d)" % len(segs)))
     fig.savefig(path, dpi=dpi)
     plt.close(fig)

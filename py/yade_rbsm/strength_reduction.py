@@ -44,7 +44,10 @@ columns that toppled while settling are a collapsed pile, not the slope to reduc
 every joint and material ``calibration.joint_strength(c/F, tanφ/F)`` of the soil's c, tanφ
 (*soil*), instead of dividing the joints' own. *png*: a path prefix; the blocks coloured by their
 displacement in the last stable and the first failed trial are drawn to ``<png>_stable.png`` and
-``<png>_failed.png`` (the mechanism at the bracket's ends; a prefix ending in .png loses it). A failed trial also says how its moving
+``<png>_failed.png`` (the mechanism at the bracket's ends; a prefix ending in .png loses it); where plastic
+deformable blocks are monitored, their plastic shear gained in the trial too, to ``<png>_stable_plastic.png`` and
+``<png>_failed_plastic.png`` (the band). *png_line*: a polyline drawn dashed on them (e.g. limit equilibrium's
+critical circle, :meth:`yade_rbsm.limit_equilibrium.Circle.polyline`). A failed trial also says how its moving
 blocks moved (``Trial.mechanism``, ``SRResult.mechanism`` for the bracket's failed end): sliding,
 toppling (blocks turning about their corners), or both. ``SRResult.warnings`` (printed when verbose)
 says where the bracket may be the criterion's rather than the slope's: a failed end that only did not
@@ -76,6 +79,8 @@ class Trial:
     moving: float = 0.0  # mass fraction of the monitored blocks displaced more than d_fail
     local: List[int] = field(default_factory=list)  # ids of blocks that ran away alone (local failure)
     png: str = ""
+    png_plastic: str = ""  # the plastic shear gained in the trial, where plastic blocks are monitored
+    plastic_gain: dict = field(default_factory=dict)  # {block id: plastic shear gained in the trial}, plastic blocks
     mechanism: str = ""  # a failed trial's: "sliding", "sliding and rotating" or "toppling" (see _mechanism)
     rocking: float = 0.0  # its moving blocks' mass-weighted rotation x circumradius / displacement
 
@@ -225,7 +230,7 @@ def _trial_args(where, F, tol, d_fail, max_steps, check, damping):
 
 
 def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=100, damping=0.7,
-          reduce_tensile=False, verbose=False, mass_fraction=0.01, png=None, patience=4):
+          reduce_tensile=False, verbose=False, mass_fraction=0.01, png=None, patience=4, png_line=None):
     """One trial at factor *F* from the state saved under *mark* (see the module docstring).
     Returns a :class:`Trial`; a failed one says how its moving blocks moved (Trial.mechanism).
 
@@ -248,6 +253,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     ids = ids if ids is not None else _free_ids()
     start = {i: Vector3(O.bodies[i].state.pos) for i in ids}
     start_ori = {i: Quaternion(O.bodies[i].state.ori) for i in ids}
+    start_shear = {i: O.bodies[i].state.plasticShear for i in ids if getattr(O.bodies[i].material, "plastic", False)}
     mass = {i: O.bodies[i].state.mass for i in ids}
     total = sum(mass.values()) or 1.0
     steps, ratio, dmax, moving = 0, float("inf"), 0.0, 0.0
@@ -288,13 +294,18 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
     t = Trial(F, failed, reason, steps, ratio, dmax, time.time() - w0, moving, sorted(local))
     if failed:
         t.mechanism, t.rocking = _mechanism(ids, start_ori, d, d_fail)
+    t.plastic_gain = {i: O.bodies[i].state.plasticShear - v for i, v in start_shear.items()}
     if png:  # coloured by the trial's displacement: refPos at the trial's start for the drawing only
         from .snapshots import snapshot
         built = {i: Vector3(O.bodies[i].state.refPos) for i in ids}  # (joints_on needs the built pose)
         for i in ids:
             O.bodies[i].state.refPos = start[i]
-        t.png = snapshot(png, title="strength reduction F = %.4f: %s (%s%s)" % (
-            F, "failed" if failed else "stable", reason, (", " + t.mechanism) if t.mechanism else ""))
+        title = "strength reduction F = %.4f: %s (%s%s)" % (F, "failed" if failed else "stable", reason,
+                                                             (", " + t.mechanism) if t.mechanism else "")
+        t.png = snapshot(png, title=title, slip=png_line)
+        if t.plastic_gain:  # the band
+            t.png_plastic = snapshot(png[:-4] + "_plastic.png", title=title, slip=png_line, values=t.plastic_gain,
+                                     label="plastic shear strain gained in the trial [-]")
         for i in ids:
             O.bodies[i].state.refPos = built[i]
     if verbose:
@@ -305,7 +316,7 @@ def trial(F, ref, mark, ids=None, tol=1e-4, d_fail=0.05, max_steps=5000, check=1
 def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None, tol=1e-4, d_fail=0.05,
                        max_steps=5000, check=100, damping=0.7, reduce_tensile=False, verbose=True,
                        mark="rbsm_srm_reference", density_scaling=False, mass_fraction=0.01, reference_tol=0.5,
-                       calibration=None, soil=None, png=None, reference_rotation=0.2, patience=4):
+                       calibration=None, soil=None, png=None, reference_rotation=0.2, patience=4, png_line=None):
     """Factor of safety by strength reduction on the current scene (see the module docstring).
     *density_scaling*: RbsmTimeStepper.densityScaling in every trial (fewer steps to the same
     equilibrium; restored at the end).
@@ -379,7 +390,8 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
     trials = []
     patience = count(where, "patience", patience)
     kw = dict(ids=ids, tol=tol, d_fail=d_fail, max_steps=max_steps, check=check, damping=damping,
-              reduce_tensile=reduce_tensile, verbose=verbose, mass_fraction=mass_fraction, patience=patience)
+              reduce_tensile=reduce_tensile, verbose=verbose, mass_fraction=mass_fraction, patience=patience,
+              png_line=png_line)
     crit = ("failure: blocks displaced > %g m weigh > %g %% of the monitored mass, or the monitored mass creeping at an "
             "undiminished rate after %d steps, or unbalanced-force ratio not < %g within %d steps (damping %g)"
             % (d_fail, 100 * mass_fraction, max_steps, tol, patience * max_steps, damping))
@@ -400,7 +412,7 @@ def strength_reduction(start=1.0, grow=1.25, rtol=0.01, max_trials=30, ids=None,
                                "cannot follow (named on stderr: a sliver? the builders' min_area) ends the strength "
                                "reduction; the trials before it: %s" % (F, O.iter, e, "; ".join(str(t) for t in trials)
                                                                         or "none")) from None
-        pngs[F] = t.png
+        pngs[F] = [t.png, t.png_plastic]
         return t
     try:
         lo = hi = None
@@ -510,14 +522,16 @@ def _reference_ratio(mark, ids):
 
 
 def _keep_bracket_pngs(png, pngs, lo, hi):
-    """<png>_stable.png and <png>_failed.png from the bracket's trials; the other trials' drawings go."""
+    """<png>_stable.png and <png>_failed.png (and their _plastic twins) from the bracket's trials; the other
+    trials' drawings go."""
     import os
-    for F, path in pngs.items():
-        if not path:
-            continue
-        if F == lo:
-            os.replace(path, png + "_stable.png")
-        elif F == hi:
-            os.replace(path, png + "_failed.png")
-        else:
-            os.remove(path)
+    for F, paths in pngs.items():
+        for path, twin in zip(paths, ("", "_plastic")):
+            if not path:
+                continue
+            if F == lo:
+                os.replace(path, png + "_stable%s.png" % twin)
+            elif F == hi:
+                os.replace(path, png + "_failed%s.png" % twin)
+            else:
+                os.remove(path)

@@ -142,14 +142,61 @@ def voronoi_tessellation(slope, n=None, spacing=None, seed=0, min_distance=0.0, 
     return VoronoiTessellation(blocks, site_pts, list(r["site"]), r["cells"], r["split"], r["dropped"], r["dropped_area"])
 
 
-def triangle_blocks(slope, spacing):
+def triangle_blocks(slope, spacing, seed=None):
     """Triangles [[(x, y), ...], ...] (counter-clockwise) tiling the slope polygon, none with an edge longer than
     *spacing* nor an angle below about 20.7 deg: CGAL's constrained Delaunay refinement. The blocks for plastic
-    deformable soil (RbsmMat.plastic): a band runs through triangles, where Voronoi cells lock."""
+    deformable soil (RbsmMat.plastic): a band runs through triangles, where Voronoi cells lock. The mesh is
+    deterministic; with a *seed* (an integer >= 0) its interior vertices move at random (:func:`jitter_mesh`), so
+    that seeds give the scatter of a result over meshes of one spacing, as Voronoi seeds do."""
     pts = _slope(slope)
     if isinstance(spacing, bool) or not (isinstance(spacing, (int, float)) and math.isfinite(spacing) and spacing > 0):
         raise ValueError("triangle_blocks: spacing must be a length > 0 (got %r)" % (spacing,))
-    return [list(t) for t in _tess.triangle_mesh(pts, float(spacing))]
+    tris = [list(t) for t in _tess.triangle_mesh(pts, float(spacing))]
+    if seed is None:
+        return tris
+    if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
+        raise ValueError("triangle_blocks: seed must be an integer >= 0 or None (got %r)" % (seed,))
+    return jitter_mesh(tris, seed, spacing)
+
+
+def jitter_mesh(tris, seed, spacing, amount=0.2, min_angle=15.0, max_edge=1.25):
+    """The triangles *tris* (shared vertices bit for bit) with every vertex off the outline (a vertex all of whose
+    edges two triangles share) moved once, in a fixed order, by a random vector (numpy's generator of *seed*) up
+    to *amount* x its shortest edge; a move that would leave one of its triangles with an angle below *min_angle*
+    deg or an edge longer than *max_edge* x *spacing* is halved, up to three times, then not made."""
+    import numpy as np
+    rng = np.random.default_rng(seed)
+    tris = [[tuple(v) for v in t] for t in tris]
+    edges = collections.Counter(frozenset((t[k], t[(k + 1) % 3])) for t in tris for k in range(3))
+    outline = {v for e, n in edges.items() if n == 1 for v in e}
+    at = collections.defaultdict(list)
+    for i, t in enumerate(tris):
+        for v in t:
+            at[v].append(i)
+
+    def fits(t):
+        for k in range(3):
+            a, b, c = t[k], t[(k + 1) % 3], t[(k + 2) % 3]
+            u, w = (b[0] - a[0], b[1] - a[1]), (c[0] - a[0], c[1] - a[1])
+            lu, lw = math.hypot(*u), math.hypot(*w)
+            if lu > max_edge * spacing or u[0] * w[1] - u[1] * w[0] <= math.sin(math.radians(min_angle)) * lu * lw:
+                return False
+        return True
+    for v in sorted(at):
+        if v in outline:
+            continue
+        r = amount * min(math.dist(v, u) for i in at[v] for u in tris[i] if u != v)
+        angle, rho = rng.uniform(0.0, 2 * math.pi), r * math.sqrt(rng.uniform())
+        for _ in range(4):
+            w = (v[0] + rho * math.cos(angle), v[1] + rho * math.sin(angle))
+            moved = [[w if u == v else u for u in tris[i]] for i in at[v]]
+            if all(fits(t) for t in moved):
+                for i, t in zip(at[v], moved):
+                    tris[i] = t
+                at[w] = at.pop(v)
+                break
+            rho *= 0.5
+    return [list(t) for t in tris]
 
 
 def voronoi_blocks(slope, n=None, spacing=None, seed=0, min_distance=0.0, sites=None, min_area=None):

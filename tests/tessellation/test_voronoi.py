@@ -10,6 +10,7 @@ What is checked on every tessellation (function check_tiling):
     same vertex coordinates bit for bit; the edges used once lie on the slope's outline and their
     total length equals the outline's length (so no interior edge is left without its partner).
 """
+import collections
 import importlib.util
 import math
 import os
@@ -276,3 +277,29 @@ def test_triangles_refuse_a_bad_slope():
     with pytest.raises(ValueError) as e:
         vor.triangle_blocks([(0, 0), (2, 2), (2, 0), (0, 2)], 1.0)
     assert "not a simple polygon" in str(e.value) and "slope" in str(e.value)
+
+
+@pytest.mark.parametrize("slope,h", [(SLOPE, 3.0), (L_SHAPE, 1.0), (NOTCHED, 1.5)], ids=["slope", "L", "notched"])
+def test_triangles_with_a_seed_are_another_mesh_of_the_same_slope(slope, h):
+    """triangle_blocks(seed=): the interior vertices moved at random (the mesh's own scatter, as Voronoi seeds give):
+    still a conforming tiling, the outline's vertices where they were, no angle below 15 deg, no edge beyond
+    1.25 x the spacing; the same seed the same mesh, another seed another."""
+    plain = vor.triangle_blocks(slope, h)
+    one, again, two = (vor.triangle_blocks(slope, h, seed=s) for s in (1, 1, 2))
+    assert one == again and one != two and len(one) == len(plain)
+    on_outline = _outline_vertices(plain)
+    for tris in (one, two):
+        check_tiling(slope, tris)
+        assert min(min_angle(t) for t in tris) >= 15.0
+        assert max(math.dist(t[k], t[(k + 1) % 3]) for t in tris for k in range(3)) <= 1.25 * h
+        assert on_outline <= {v for t in tris for v in t}
+        moved = {v for t in tris for v in t} - {v for t in plain for v in t}
+        assert len(moved) > 0.8 * (len({v for t in plain for v in t}) - len(on_outline))
+    with pytest.raises(ValueError, match="seed must be an integer >= 0"):
+        vor.triangle_blocks(slope, h, seed=-1)
+
+
+def _outline_vertices(tris):
+    """The vertices of edges that only one triangle has."""
+    edges = collections.Counter(frozenset((t[k], t[(k + 1) % 3])) for t in tris for k in range(3))
+    return {v for e, n in edges.items() if n == 1 for v in e}
