@@ -1,13 +1,11 @@
 """Goodman & Bray's toppling by strength reduction (issue 36): flat-topped columns on a stepped base, built by
 column_blocks on a stepped ground (toppling_columns.py: two columns, and ten with a sliding toe), at three joint
-stiffnesses. fos() puts Goodman & Bray's
-rigid-column answer (toppling.columns of the builder's blocks, the joints' friction, the scene's gravity) beside
-strength reduction, which fails by toppling below it: a column on elastic joints turns before its weight bears
-on its base corner (the contact shrinks towards the corner as the column turns, while its lean adds to the
-overturning moment), so the limit lies above the rigid one by a margin that shrinks with the joints' stiffness,
-about as kn^(-1/3) (2.15 x a decade) for a no-tension elastic base. Checked: the stiffer, the closer; the gap
+stiffnesses. fos() puts Goodman & Bray's rigid-column answer (toppling.columns of the builder's blocks, the joints'
+friction, the scene's gravity) beside strength reduction, which fails by toppling below it: a column on elastic
+joints turns before its weight bears on its base corner (the contact shrinks towards the corner as the column
+turns, while its lean adds to the overturning moment), so it fails at a factor below the rigid one, by a margin
+that shrinks with the joints' stiffness about as kn^(-1/3) (2.15 x a decade) for a no-tension elastic base. Checked: the stiffer, the closer; the gap
 shrinks by 1.5-4 x a decade; extrapolated at that rate from the two stiffest, within 1.5 % of Goodman & Bray."""
-import math
 import os
 
 import pytest
