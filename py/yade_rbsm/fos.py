@@ -290,7 +290,7 @@ def _goodman_bray(sb):
         cols = toppling.columns(sb)
     except ValueError as e:
         return dict(fs=None, note="not Goodman & Bray's geometry: %s" % e)
-    toe = -1 if sb.surface[0][1] < sb.surface[-1][1] else 1  # the direction of the toe along x
+    toe = -1 if toppling.toe_side(sb) == "left" else 1  # the direction of the toe along x (columns' own rule)
     gx, gy = omega.newton(O).gravity[0], omega.newton(O).gravity[1]
     psi = math.atan2(toe * gx, -gy)
     if not 0 < psi < 0.5 * math.pi:

@@ -22,7 +22,7 @@ import math
 from dataclasses import dataclass, field
 from typing import List
 
-__all__ = ["Column", "ToppleResult", "columns", "goodman_bray", "goodman_bray_fs"]
+__all__ = ["Column", "ToppleResult", "columns", "goodman_bray", "goodman_bray_fs", "toe_side"]
 
 
 @dataclass
@@ -112,12 +112,8 @@ def columns(blocks, toe=None):
     slope = [b for b in blocks.blocks if not b.fixed]
     if not slope:
         raise ValueError("columns: no free blocks")
-    ground = blocks.surface
     if toe is None:
-        if ground[0][1] == ground[-1][1]:
-            raise ValueError("columns: the ground is as high at both ends; say which end is the toe (toe='left' or "
-                             "'right')")
-        toe = "left" if ground[0][1] < ground[-1][1] else "right"
+        toe = toe_side(blocks)
     if toe not in ("left", "right"):
         raise ValueError("columns: toe must be 'left' or 'right' (got %r)" % (toe,))
     by_x = {}
@@ -143,3 +139,13 @@ def columns(blocks, toe=None):
                              "tops and risers, the base as steps)" % (name, what))
         out.append(Column(ys[0], ys[1], xb - xa))
     return out if toe == "left" else out[::-1]
+
+
+def toe_side(blocks):
+    """"left" or "right": the end of the slope's ground (SlopeBlocks.surface) that is lower; ValueError when both
+    are as high."""
+    ground = blocks.surface
+    if ground[0][1] == ground[-1][1]:
+        raise ValueError("columns: the ground is as high at both ends; say which end is the toe (toe='left' or "
+                         "'right')")
+    return "left" if ground[0][1] < ground[-1][1] else "right"
