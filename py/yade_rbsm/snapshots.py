@@ -28,22 +28,20 @@ def block_polygons(O=None):
     return out
 
 
-def failed_joints(O=None, min_share=0.01):
+def failed_joints(O=None, min_share=0.05):
     """The segments of the joints at their strength (slipping somewhere, ductile joints too) or broken open; not
-    those shorter than *min_share* x the median joint (a corner touching a face: a triangle mesh has two a block,
-    and they slip while the mesh deforms)."""
+    those shorter than *min_share* x the distance between their blocks' centroids across them, h1 + h2 (a corner
+    touching a face: a triangle mesh has two to eight a block, and they slip while the mesh deforms), nor those with
+    no strength at all (a smooth wall or footing slips by design: it cannot fail)."""
     if O is None:
         from yade import O
     segs = []
-    joints = list(omega.joints(O))
-    lengths = sorted(I.geom.length for I in joints)
-    shortest = min_share * lengths[len(lengths) // 2] if lengths else 0.0
-    for I in joints:
-        ph = I.phys
-        if I.geom.length < shortest:
+    for I in omega.joints(O):
+        ph, g = I.phys, I.geom
+        if g.length < min_share * (g.h1 + g.h2) or (ph.tanPhi == 0 and ph.cohesion == 0 and ph.tensileStrength == 0):
             continue
         if ph.nSlipping > 0 or (ph.nIntact == 0 and ph.nOpen > 0):  # at its strength (ductile too), or broken open
-            segs.append([(I.geom.p0[0], I.geom.p0[1]), (I.geom.p1[0], I.geom.p1[1])])
+            segs.append([(g.p0[0], g.p0[1]), (g.p1[0], g.p1[1])])
     return segs
 
 
