@@ -7,8 +7,8 @@ The bearing pressure q (footing force / B t) rises to the collapse pressure; Pra
 
     build/yade-rbsm -j1 -n -x scripts/prandtl_footing_study.py '{"cells": "triangles", "h": 0.1}'
 
-Params (one JSON object): cells (voronoi | triangles | crossed | quads), h (/ B), scaled (density scaling), rigidity (E / c,
-1000), seed, penalty (RbsmMat.penalty, 10),
+Params (one JSON object): cells (voronoi | triangles | crossed | quads), h (/ B), rough (the footing bonded with the
+soil's c), scaled (density scaling), rigidity (E / c, 1000), seed, penalty (RbsmMat.penalty, 10),
 linearShare (of the welded joints, default Ip2's 1/penalty), steps, settlement (final, / B), png (a picture of the
 blocks coloured by plastic shear at the end).
 Prints the curve q/c against settlement/B, the same for the footing's middle 80 % (its two corner cells left out),
@@ -84,7 +84,9 @@ ids = [O.bodies.append(polygon2d(b, soil)) for b in cells]
 for box in ([(-L - 0.5, -D - 0.5), (L + 0.5, -D - 0.5), (L + 0.5, -D), (-L - 0.5, -D)],
             [(-L - 0.5, -D), (-L, -D), (-L, 0.5), (-L - 0.5, 0.5)], [(L, -D), (L + 0.5, -D), (L + 0.5, 0.5), (L, 0.5)]):
     O.bodies.append(polygon2d(box, smooth, fixed=True))
-footing = O.bodies.append(polygon2d([(-B / 2, 0), (B / 2, 0), (B / 2, 0.2), (-B / 2, 0.2)], smooth, fixed=True))
+# rough: the footing bonded to the soil with the soil's own c (full adhesion); Prandtl's 5.14 c holds for both (Hill)
+rough = RbsmMat(young=E, poisson=0.3, density=2000, cohesion=10 * c, tensileStrength=10 * c, label="rough")
+footing = O.bodies.append(polygon2d([(-B / 2, 0), (B / 2, 0), (B / 2, 0.2), (-B / 2, 0.2)], rough if p.get("rough") else smooth, fixed=True))
 O.engines = yade_rbsm.engines(gravity=(0, 0, 0), damping=0.6)
 omega.ip2(O).setCohesionNow = True
 if p.get("scaled"):  # quasi-static: the smallest cells do not set the step
