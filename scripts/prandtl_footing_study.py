@@ -1,7 +1,7 @@
 """Prandtl's strip footing on plastic deformable blocks (issue 39): how close a cut soil comes to (2 + π) c.
 
-A rigid smooth footing of width B = 1 m is pushed at a slow constant rate into a weightless Tresca soil
-(φ = 0, c = 10 kPa, E = 1000 c unless given, ν = 0.3, plane strain) 6 m wide and 2 m deep, cut into blocks of size h under
+A rigid smooth footing of width B = 1 m is pushed at a slow constant rate into a weightless Tresca soil (φ = 0,
+c = 10 kPa, E = 1000 c unless given, ν = 0.3, plane strain) 6 m wide and 2 m deep, cut into blocks of size h under
 the footing, growing 15 % a cell (grids) or 1.5 × per B (Voronoi) away from it; fixed smooth sides and base.
 The bearing pressure q (footing force / B t) rises to the collapse pressure; Prandtl's is 5.14 c.
 
@@ -86,7 +86,8 @@ for box in ([(-L - 0.5, -D - 0.5), (L + 0.5, -D - 0.5), (L + 0.5, -D), (-L - 0.5
     O.bodies.append(polygon2d(box, smooth, fixed=True))
 # rough: the footing bonded to the soil with the soil's own c (full adhesion); Prandtl's 5.14 c holds for both (Hill)
 rough = RbsmMat(young=E, poisson=0.3, density=2000, cohesion=10 * c, tensileStrength=10 * c, label="rough")
-footing = O.bodies.append(polygon2d([(-B / 2, 0), (B / 2, 0), (B / 2, 0.2), (-B / 2, 0.2)], rough if p.get("rough") else smooth, fixed=True))
+footing = O.bodies.append(polygon2d([(-B / 2, 0), (B / 2, 0), (B / 2, 0.2), (-B / 2, 0.2)], rough if p.get("rough") else smooth,
+                                    fixed=True))
 O.engines = yade_rbsm.engines(gravity=(0, 0, 0), damping=0.6)
 omega.ip2(O).setCohesionNow = True
 if p.get("scaled"):  # quasi-static: the smallest cells do not set the step
@@ -115,7 +116,7 @@ for k in range(60):
     O.bodies[footing].state.vel = (0, -v * min(1.0, (k + 1) / 6.0), 0)  # a short ramp
     O.run(steps // 60, True)
     curve.append(((y0 - O.bodies[footing].state.pos[1]) / B, O.forces.f(footing)[1] / B / c, middle_pressure() / c))
-tail = [q for _, q, _ in curve[48:]]
+tail = curve[48:]  # the last fifth
 print("cells %s, h %g B, %d blocks, penalty %g, linearShare %s: q/c at settlement/B" % (kind, h0, len(ids), soil.penalty, p.get("linearShare", "1/penalty")))
 print("  " + "  ".join("%.3f:%.2f" % s[:2] for s in curve[4::8]))
 print("  middle 80 %: " + "  ".join("%.3f:%.2f" % (s[0], s[2]) for s in curve[4::8]))
@@ -124,6 +125,6 @@ if p.get("png"):  # the mechanism: blocks coloured by their plastic shear
     shear = sorted(O.bodies[i].state.plasticShear for i in ids)
     snapshot(p["png"], title="footing, %s, settlement %.3f B: plastic shear" % (kind, curve[-1][0]), field="plasticShear",
              vmax=max(shear[int(0.98 * len(shear))], 1e-9))  # the corners' cells off the scale: the fans show
-print("RESULT " + json.dumps({"cells": kind, "h": h0, "n": len(ids), "q_over_c": sum(tail) / len(tail),
-                              "middle_q_over_c": sum(m for _, _, m in curve[48:]) / 12, "prandtl": 2 + math.pi,
+print("RESULT " + json.dumps({"cells": kind, "h": h0, "n": len(ids), "q_over_c": sum(q for _, q, _ in tail) / len(tail),
+                              "middle_q_over_c": sum(m for _, _, m in tail) / len(tail), "prandtl": 2 + math.pi,
                               "yielded": sum(1 for i in ids if O.bodies[i].state.plasticShear > 0), "dt": O.dt}))

@@ -4,8 +4,9 @@ stiffnesses. fos() puts Goodman & Bray's rigid-column answer (toppling.columns o
 friction, the scene's gravity) beside strength reduction, which fails by toppling below it: a column on elastic
 joints turns before its weight bears on its base corner (the contact shrinks towards the corner as the column
 turns, while its lean adds to the overturning moment), so it fails at a factor below the rigid one, by a margin
-that shrinks with the joints' stiffness about as kn^(-1/3) (2.15 x a decade) for a no-tension elastic base. Checked: the stiffer, the closer; the gap
-shrinks by 1.5-4 x a decade; extrapolated at that rate from the two stiffest, within 1.5 % of Goodman & Bray."""
+that shrinks with the joints' stiffness about as kn^(-1/3) (2.15 x a decade) for a no-tension elastic base.
+Checked: the stiffer, the closer; the gap shrinks by 1.5-4 x a decade; extrapolated at that rate from the two
+stiffest, within 1.5 % of Goodman & Bray."""
 import os
 
 import pytest
