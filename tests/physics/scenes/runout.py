@@ -2,7 +2,8 @@
 Fixed ground: an incline at psi (deg) down to a kink at x = 0, then a flat. A block L x H (density 2000,
 joint kn = ks = 1e9 Pa/m, phi, c = 0) starts at rest on the incline at its static overlap (start 'static') or
 touching it (start 'touching', as a user places it: it bounces on its springs as it slides), its front
-corner `slide` m up the slope from the kink (kink_only: stop there); gravity g = 9.81; contact damping ratio xi, no other damping.
+corner `slide` m up the slope from the kink (kink_only: stop there); gravity g = 9.81; contact damping ratio xi, no other damping;
+impact_safety: engines()'s (default 0.25).
 Returns the centroid's speed when its travel along the incline is slide − L (the front corner still L/2
 up the slope) and the closed form there, sqrt(2 g s (sin psi − tan phi cos psi)); and the runout: the
 centroid's x when it stops on the flat, from the kink; and the energy balance (O.trackEnergy from the first
@@ -27,7 +28,7 @@ t_, n_ = (-cos(psi), sin(psi)), (sin(psi), cos(psi))  # up the slope, out of it
 front = (t_[0] * slide - n_[0] * d, t_[1] * slide - n_[1] * d)
 corners = [(0, H), (L, H), (L, 0), (0, 0)]  # (up the slope, out of it): a left-handed frame, so clockwise here
 b = O.bodies[O.bodies.append(polygon2d([(front[0] + t_[0] * u + n_[0] * v, front[1] + t_[1] * u + n_[1] * v) for u, v in corners], mat))]
-O.engines = engines(gravity=(0, -g, 0), contact_damping=xi, update_tolerance=p.get("ut", 0.0))
+O.engines = engines(gravity=(0, -g, 0), contact_damping=xi, update_tolerance=p.get("ut", 0.0), impact_safety=p.get("impact_safety", 0.25))
 O.trackEnergy = True
 O.step()
 E0 = O.energy.total()  # the energy balance: O.energy.total() - E0, against the work of gravity
