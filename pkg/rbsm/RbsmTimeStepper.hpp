@@ -62,7 +62,7 @@ public:
 		((Real, safetyFactor, 0.8, Attr::triggerPostLoad, "Fraction of the stable step allowed (0 < safetyFactor ≤ 1)."))
 		((Real, impactSafety, 0.25, Attr::triggerPostLoad,
 			"Fraction of the stable step allowed while contacts can open and close (0 < impactSafety ≤ 1; at most safetyFactor is used): "
-			"frictional joints (no intact point) and the first contacts of blocks without joints, in undamped stages (NewtonIntegrator.damping = 0). "
+			"frictional joints (no intact point) and the first contacts of blocks without joints, in undamped stages (NewtonIntegrator.damping = 0; contact damping, Law2_RbsmGeom_RbsmPhys_MohrCoulomb.dampingRatio, does not count: its landings are impacts too). "
 			"Stability needs only safetyFactor, but an impact resolved in two or three steps stores up to (ω·dt)² of its energy in the overlap of its first step: "
 			"at 0.8 a flat block dropped 2 m rebounded to 3.5 m. Bonded joints and damped (quasi-static) stages keep safetyFactor; set it to safetyFactor for the old behaviour. "
 			"Accuracy, not stability: only the step the stepper sets (setDt) takes it; with setDt=False a larger O.dt is not refused for it, and yade_rbsm.critical_time_step() is the stability limit."))
@@ -72,7 +72,7 @@ public:
 		((Real, maxDt, std::numeric_limits<Real>::infinity(), Attr::triggerPostLoad, "Largest step that setDt sets [s] (> 0): a user's cap below the stable step."))
 		((Real, maxStepMotion, 0.5, Attr::triggerPostLoad, "Largest motion of a block in one step, (|v| + |ω| R)·dt, as a fraction of its inner radius (the distance from its centroid to its nearest edge line) before it is reported and the run stopped; 0 switches the check off."))
 		((long, lastCheck, -1, Attr::readonly, "Step of the last full estimate (saved with the scene, so that a loaded scene is checked on the same steps as an uninterrupted run)."))
-		((Real, criticalDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step of the joints [s], from the last full estimate and the joints made since (inf: no joint)."))
+		((Real, criticalDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step of the joints [s], from the last full estimate and the joints made since (inf: no joint). Where impactSafety applies (frictional joints in undamped stages) those joints count (safetyFactor/impactSafety)² stiffer, so that safetyFactor × criticalDt is their impactSafety step: then it is below the stability limit of yade_rbsm.critical_time_step()."))
 		((Real, firstContactDt, std::numeric_limits<Real>::infinity(), Attr::readonly, "Critical time step of the stiffest single joint the free blocks without joints can form [s] (inf: no such block, or nothing it can meet)."))
 		((Real, newtonDamping, 0, Attr::readonly, "NewtonIntegrator's damping as read at the last full estimate."))
 		((int, criticalBody, -1, Attr::readonly, "Id of the block whose joints limit criticalDt (-1: none)."))
@@ -98,7 +98,7 @@ public:
 		// setDt assigned from Python (ts.setDt = True after O.dt = x, as scripts/qt_view_landslide.py does)
 		// is the script's choice: the O.dt set before it is the stepper's to replace, not a script's step
 		.add_property("setDt", &RbsmTimeStepper::getSetDt, &RbsmTimeStepper::assignSetDt, "Set O.dt to the stable step (True) or only check it and refuse a larger O.dt (False). An O.dt set from a script (or another engine) between two steps that this engine set switches setDt off, with a note (as YADE's time steppers stop at ``O.dt = x``): the step is then the script's, checked against the stable limit. Assigning setDt (True) lets the stepper choose the step again at its next step, also right after ``O.dt = x``. (YADE's ``O.dt = -1`` looks for a TimeStepper, which this GlobalEngine is not.)")
-		.add_property("stableDt", &RbsmTimeStepper::stableDt, "The step this engine allows now [s]: safetyFactor × min(criticalDt, firstContactDt) / √(1 + newtonDamping).")
+		.add_property("stableDt", &RbsmTimeStepper::stableDt, "The step this engine allows now [s]: min(safetyFactor × criticalDt, f × firstContactDt) / √(1 + newtonDamping), f = impactSafety where it applies (setDt, undamped stages), else safetyFactor; with densityScaling, the density-scaled stages' common step (targetDt).")
 	);
 	// clang-format on
 	Real stableDt() const;
