@@ -9,9 +9,9 @@ On the flat, with the landing damped (ξ 0.3, 1):
   landing's numerics do not set it. Before, the dashpot of a point that came into contact within the step
   (the block's corner at the kink, the growing end of its face as it tips onto the flat) pushed at the full
   closing speed over the whole step: ξ 1 ran out 2.59 m at the default step and 2.37 m at a quarter of it, and
-  from one step size to the next by up to 9 % (impact_safety 0.18–0.30). Now it acts on the part of the closing the point took part in.
+  from one step size to the next by up to 6 % (impact_safety 0.18–0.30). Now it acts on the part of the closing the point took part in.
 * it changes by less than 2 % from ξ 0.3 to 1 (the issue's bound; 1.2–1.9 %). Before, 1.6–4.4 %, and the
-  ξ 1 runouts scattered over 2.45–2.67 m with the step. What is left is the restitution the damping sets
+  ξ 1 runouts scattered over 2.47–2.62 m with the step. What is left is the restitution the damping sets
   (at a quarter of the step, ξ 0.1…1.5 give 2.36–2.43 m for the 0.2 m block, not monotonically; a point mass
   would change by 19 %).
 * it lies within the point-mass answers, 2.38 m (the normal velocity stopped by a Coulomb impulse) and 3.81 m
