@@ -9,7 +9,7 @@ The bearing pressure q (footing force / B t) rises to the collapse pressure; Pra
 
 Params (one JSON object): cells (voronoi | triangles | crossed | quads), h (/ B), rough (the footing bonded with the
 soil's c), scaled (density scaling), rigidity (E / c, 1000), seed, penalty (RbsmMat.penalty, 10),
-linearShare (of the welded joints, default Ip2's 1/penalty), steps, settlement (final, / B), png (a picture of the
+linearShare (of the welded joints, default Ip2's 1/penalty), weldYields (RbsmMat's; true here: the welds as strong as the soil; false: elastic and unlimited), steps, settlement (final, / B), png (a picture of the
 blocks coloured by plastic shear at the end).
 Prints the curve q/c against settlement/B, the same for the footing's middle 80 % (its two corner cells left out),
 and the last fifth's means. Prandtl's is a small-displacement answer: with E = 1000 c the mechanism forms at 2-3 %
@@ -76,7 +76,7 @@ def voronoi_cells():
 kind = p.get("cells", "triangles")
 cells = voronoi_cells() if kind == "voronoi" else grid_cells(kind)
 soil = RbsmMat(young=E, poisson=0.3, density=2000, planeStrain=True, cohesion=c, frictionAngle=0, tensileStrength=10 * c,
-               deformable=True, plastic=True, penalty=p.get("penalty", 10.0), label="soil")
+               deformable=True, plastic=True, penalty=p.get("penalty", 10.0), weldYields=p.get("weldYields", True), label="soil")
 smooth = RbsmMat(young=E, poisson=0.3, density=2000, frictionAngle=0, label="smooth")
 O.materials.append(soil)
 O.materials.append(smooth)
@@ -93,10 +93,9 @@ omega.ip2(O).setCohesionNow = True
 if p.get("scaled"):  # quasi-static: the smallest cells do not set the step
     omega.engine("timeStepper", O).densityScaling = True
 O.step()
-if "linearShare" in p:
-    for I in O.interactions:
-        if I.isReal and I.phys.welded:
-            I.phys.linearShare = p["linearShare"]
+for I in O.interactions:
+    if I.isReal and I.phys.welded:
+        I.phys.linearShare = p.get("linearShare", I.phys.linearShare)
 steps, final = p.get("steps", 40000), p.get("settlement", 0.05) * B
 v = final / (steps * O.dt)
 y0 = O.bodies[footing].state.pos[1]
@@ -109,6 +108,17 @@ def middle_pressure():
         if I.isReal and abs(0.5 * (I.geom.p0[0] + I.geom.p1[0])) < 0.4 * B:
             force, length = force + I.phys.normalForce, length + I.geom.length
     return force / length if length > 0 else 0.0
+
+
+def weld_traction_ratio():
+    """The largest |τ| / (c + σ tan φ) over the welded joints' points: a cut of the soil is as strong as the soil."""
+    worst = 0.0
+    for I in O.interactions:
+        if I.isReal and getattr(I.phys, "welded", False):
+            for tau, sn, intact in zip(I.phys.shearTraction, I.phys.normalTraction, I.phys.intactPoints):
+                strength = max(I.phys.cohesion + sn * I.phys.tanPhi, 0.0) if intact else max(sn, 0.0) * I.phys.tanPhi
+                worst = max(worst, abs(tau) / strength if strength > 0 else (math.inf if tau != 0 else 0.0))
+    return worst
 
 
 curve = []
@@ -125,6 +135,6 @@ if p.get("png"):  # the mechanism: blocks coloured by their plastic shear
     shear = sorted(O.bodies[i].state.plasticShear for i in ids)
     snapshot(p["png"], title="footing, %s, settlement %.3f B: plastic shear" % (kind, curve[-1][0]), field="plasticShear",
              vmax=max(shear[int(0.98 * len(shear))], 1e-9))  # the corners' cells off the scale: the fans show
-print("RESULT " + json.dumps({"cells": kind, "h": h0, "n": len(ids), "q_over_c": sum(q for _, q, _ in tail) / len(tail),
+print("RBSM_RESULT " + json.dumps({"cells": kind, "h": h0, "n": len(ids), "q_over_c": sum(q for _, q, _ in tail) / len(tail),
                               "middle_q_over_c": sum(m for _, _, m in tail) / len(tail), "prandtl": 2 + math.pi,
-                              "yielded": sum(1 for i in ids if O.bodies[i].state.plasticShear > 0), "dt": O.dt}))
+                              "weld_traction_ratio": weld_traction_ratio(), "yielded": sum(1 for i in ids if O.bodies[i].state.plasticShear > 0), "dt": O.dt}))

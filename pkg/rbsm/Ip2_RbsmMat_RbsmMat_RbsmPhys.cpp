@@ -111,6 +111,7 @@ void Ip2_RbsmMat_RbsmMat_RbsmPhys::go(const shared_ptr<Material>& b1, const shar
 	p->welded = bonded && m1.deformable && m2.deformable;
 	// its mean jump takes the penalty, its bending (the jump's linear part) Kawai's springs of the materials
 	if (p->welded && p->kn > 0) p->linearShare = std::min<Real>(1, rbsm::kawaiSpringsTwoMaterials(m1.young, m1.poisson, g->h1, m2.young, m2.poisson, g->h2, plane).kn / p->kn);
+	p->weldYields = p->welded && m1.plastic && m2.plastic && m1.weldYields && m2.weldYields; // as strong as the material, no more
 	if (p->welded && m1.weldBreakStrain > 0 && m2.weldBreakStrain > 0) p->weldBreakStrain = std::max(m1.weldBreakStrain, m2.weldBreakStrain);
 	p->initPoints(g->nPoints(), p->welded || (bonded && (p->cohesion > 0 || p->tensileStrength > 0)));
 	I->phys = p;

@@ -399,8 +399,11 @@ template <bool Strain> bool Law2_RbsmGeom_RbsmPhys_MohrCoulomb::joint(RbsmGeom& 
 	Real dashpots[2 * rbsm::kMaxIntegrationPoints]; // the dashpots' forces, written by damped joints only
 	if (damped) std::fill_n(dashpots, 2 * n, Real(0)); // (an open point's carries nothing)
 	const bool cohesive = p.cohesion != 0 || p.tensileStrength != 0;
-	if (Strain && p.welded) // a cut of a continuum: elastic, unlimited (the strengths are not used)
-		j.params.cohesion = j.params.tensileStrength = std::numeric_limits<Real>::infinity();
+	if (Strain && p.welded) { // a cut of a continuum: elastic and unlimited, or as strong as a plastic material
+		if (p.weldYields) j.params.ductile = true; // slips on c + σn tan φ, keeps its cohesion
+		else j.params.cohesion = std::numeric_limits<Real>::infinity();
+		j.params.tensileStrength = std::numeric_limits<Real>::infinity(); // tension: the blocks' cut-off
+	}
 	else if (cohesive) { // cohesionless joints have no bond to scale
 		const Real bonded = bondedFraction(p, g, j.kin, j.tangent, scene->dt);
 		j.params.cohesion *= bonded;

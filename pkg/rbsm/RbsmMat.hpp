@@ -52,6 +52,12 @@ public:
 			"becomes a Mohr-Coulomb joint of the material's strength (a crack of the continuum, along which a failed mass can slide and run out); "
 			"the criterion is the blocks' plastic shear because it is what a shear band accumulates and a uniformly stressed block does not localise "
 			"(≥ 0; 0, default: welded joints stay welded). Read when a joint is made (:yref:`RbsmPhys.weldBreakStrain`)."))
+		((bool, weldYields, false, ,
+			"Plastic deformable blocks: their welded joints carry no more shear than the material they cut, |τ| ≤ max(c + σn tan φ, 0), "
+			"perfectly plastic (:yref:`RbsmPhys.weldYields`; tension stays the blocks' to cut off). Elastic welds (False, default) can carry "
+			"many times that where a rigid boundary's corner concentrates the strain (60 × c beside a strip footing's edges, +9.7 % on "
+			"Prandtl's load; True: +3.7 %, tests/deformable/test_footing.py); slipping welds make a slope's strength reduction converge slower "
+			"near its limit (docs/manual/guide/deformable.md). A joint yields if both its materials say so. Read when a joint is made."))
 		((Real, penalty, 100, Attr::triggerPostLoad,
 			"Deformable blocks: the stiffness of their joints' springs as a multiple of Kawai's (≥ 1): Kawai's h/E′ is the compliance "
 			"of a rigid block's half, which a deformable block carries in itself, so its side of a joint adds h/(penalty·E′). Larger is "

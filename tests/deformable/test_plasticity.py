@@ -116,6 +116,23 @@ def test_energy_balance_closes_with_yielding_blocks():
     assert r["worst"] < 0.01 and abs(r["drift"]) < 2e-3
 
 
+def test_energy_balance_closes_with_yielding_welds():
+    """The same plate with RbsmMat.weldYields: its welds slip at the blocks' strength too (plastDissip about 0.77 of
+    the initial energy, 0.37 with elastic welds). The balance's drift is the explicit return's error of the step,
+    first order: -3.6e-3 at the test above's step, -1.8e-3 at half of it, -0.9e-3 at a quarter."""
+    plastic = {"size": 4.0, "seed": 1, "v": 0.04, "steps": 4000, "safety": 0.05, "plastic": [2000, 0.3, 0.1]}
+    elastic = run_scene("energy", plastic)
+    coarse = run_scene("energy", dict(plastic, weldYields=True))
+    fine = run_scene("energy", dict(plastic, weldYields=True, safety=0.025, steps=8000))
+    for r in (coarse, fine):
+        print("yielding welds, dt %.3g: plastDissip %.3g of the initial energy (elastic welds %.3g), balance worst %.2e "
+              "drift %+.2e" % (r["dt"], r["energies"]["plastDissip"] / r["e0"], elastic["energies"]["plastDissip"] / elastic["e0"],
+                               r["worst"], r["drift"]))
+    assert coarse["energies"]["plastDissip"] > 1.5 * elastic["energies"]["plastDissip"]  # the welds took part
+    assert abs(fine["drift"]) < 0.6 * abs(coarse["drift"])  # the step's error: it goes with the step
+    assert fine["worst"] < 0.01 and abs(fine["drift"]) < 2e-3
+
+
 SETTING = r"""
 import os
 import yade_rbsm
@@ -142,6 +159,9 @@ for bad in (-1e-3, float("inf")):
         m.weldBreakStrain = bad
     except ValueError as e:
         out["refused"].append(str(e))
+m.weldYields = True
+m2.updateAttrs({"weldYields": True})
+out["weldYields"] = [RbsmMat(weldYields=True).weldYields, m.weldYields, m2.weldYields, RbsmMat().weldYields]
 s = DeformableState(plasticStrain=(1e-3, -1e-3, 0), plasticShear=2e-3)
 out["state_ctor"] = [list(s.plasticStrain), s.plasticShear]
 try:
@@ -150,9 +170,17 @@ except AttributeError as e:
     out["readonly"] = str(e)
 a = O.bodies.append(polygon2d([(0, 0), (1, 0), (1, 1), (0, 1)], soil))
 b = O.bodies.append(polygon2d([(1, 0), (2, 0), (2, 1), (1, 1)], soil))
+strong = RbsmMat(young=1e8, density=2000, deformable=True, plastic=True, cohesion=1e3, weldYields=True, label="strong")
+stiff = RbsmMat(young=1e8, density=2000, deformable=True, cohesion=1e3, weldYields=True, label="elastic")  # not plastic
+O.materials.append(strong)
+O.materials.append(stiff)
+pairs = [(a, b)]
+for mats, x in (((strong, strong), 5), ((strong, soil), 8), ((stiff, stiff), 11)):
+    pairs.append(tuple(O.bodies.append(polygon2d([(x + i, 0), (x + i + 1, 0), (x + i + 1, 1), (x + i, 1)], mt)) for i, mt in enumerate(mats)))
 O.engines = yade_rbsm.engines(gravity=(0, 0, 0))
 omega.ip2(O).setCohesionNow = True
 O.step()
+out["weld_yields"] = [[O.interactions[i, j].phys.welded, O.interactions[i, j].phys.weldYields] for i, j in pairs]
 O.bodies[a].state.strain = (-0.01, 0, 0)  # far beyond the strength: the next step returns it
 O.bodies[b].state.updateAttrs({"plasticStrain": (1e-4, 0, 0)})
 out["updated"] = list(O.bodies[b].state.plasticStrain)
@@ -182,7 +210,8 @@ out = {}
 for f in ("plastic.yade.gz", "plastic.xml"):
     O.load(f)
     sa = O.bodies[0].state
-    out[f] = [sa.yieldMode, sa.plasticShear, list(sa.plasticStrain), O.materials[0].plastic, O.materials[0].dilatancy]
+    out[f] = [sa.yieldMode, sa.plasticShear, list(sa.plasticStrain), O.materials[0].plastic, O.materials[0].dilatancy,
+              O.materials["strong"].weldYields, O.interactions[2, 3].phys.weldYields]
 report(**out)
 """
 
@@ -193,6 +222,9 @@ def test_setting_and_saving_plastic_blocks(tmp_path):
     assert len(r["refused"]) == 5 and all("dilatancy" in m and "[0, pi/2)" in m for m in r["refused"][:3])
     assert all("weldBreakStrain" in m and ">= 0" in m for m in r["refused"][3:])
     assert r["weldBreak"] == [0.05, 0.02, 0.0]
+    assert r["weldYields"] == [True, True, True, False]
+    # welded as built; the welds yield only between two plastic materials that both ask for it
+    assert r["weld_yields"] == [[True, False], [True, True], [True, False], [True, False]]
     assert r["state_ctor"] == [[1e-3, -1e-3, 0], 2e-3]
     assert "readonly" in r  # yieldMode is the integrator's to set
     mode, shear, eps_p, other, f = r["after"]
@@ -204,4 +236,4 @@ def test_setting_and_saving_plastic_blocks(tmp_path):
     assert r["png"] > 10000 and "strain" in r["bad_field"] and "plasticShear" in r["bad_field"]
     (l,) = run_ok(LOAD, workdir=str(tmp_path))
     for f in ("plastic.yade.gz", "plastic.xml"):
-        assert l[f][:3] == [mode, shear, eps_p] and l[f][3:] == [True, 0.1]
+        assert l[f][:3] == [mode, shear, eps_p] and l[f][3:] == [True, 0.1, True, True]

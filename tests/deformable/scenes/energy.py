@@ -2,7 +2,7 @@
 velocities, spins and strain rates floats freely without gravity or damping; O.energy's total (kinetic, the
 strain modes' kinetic energy, the joints' springs, the blocks' strain energy) must stay constant.
 With plastic blocks (param plastic = [c, φ, ψ]) their yield is in plastDissip and the balance still closes.
-Params: n, seed, steps, plastic, save (a path: save half-way, load and go on, compare with the uninterrupted run)."""
+Params: n, seed, steps, plastic, weldYields, save (a path: save half-way, load and go on, compare with the uninterrupted run)."""
 import os, sys, random
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from _common import params, emit
@@ -15,6 +15,7 @@ rng = random.Random(p.get("seed", 1))
 mat = RbsmMat(young=1e8, poisson=p.get("nu", 0.25), density=2000, planeStrain=True, deformable=p.get("deformable", True), cohesion=1e9, tensileStrength=1e9)
 if "plastic" in p:  # yielding blocks (issue 39; the welded joints use no strength): c, φ, ψ = plastic
     mat.plastic, mat.cohesion, mat.frictionAngle, mat.dilatancy = True, p["plastic"][0], p["plastic"][1], p["plastic"][2]
+    mat.weldYields = p.get("weldYields", False)  # and the welds slip at the same strength
 O.materials.append(mat)
 size = p.get("size", 4.0)
 ids = [O.bodies.append(polygon2d(b, mat)) for b in voronoi_blocks([(0, 0), (size, 0), (size, size), (0, size)], n=p.get("n", 30), seed=p.get("seed", 1))]

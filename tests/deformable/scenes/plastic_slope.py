@@ -6,7 +6,7 @@ gravity, then runs yade_rbsm.strength_reduction on the blocks' own strength and 
 (the reference search). The band: the plastic shear the failed end's trial gained, the share of it (mass-weighted)
 in blocks within 1.5 spacings of the critical circle ("band"), against those blocks' share of the mass
 ("band_mass"); png: a path prefix for strength reduction's drawings (the circle dashed on them).
-Params: slope (gl | taylor), cells (triangles | voronoi), spacing (m), seed, penalty, max_steps, png."""
+Params: slope (gl | taylor), cells (triangles | voronoi), spacing (m), seed, penalty, weldYields, max_steps, png."""
 import os
 import sys
 
@@ -23,6 +23,7 @@ from yade_rbsm.strength_reduction import strength_reduction
 p = params()
 name = p.get("slope", "gl")
 soil = plastic_soil(name, penalty=p.get("penalty", 10.0), label="soil")
+soil.weldYields = p.get("weldYields", False)
 O.materials.append(soil)
 spacing = p.get("spacing", 2.0)
 if p.get("cells", "triangles") == "triangles":
