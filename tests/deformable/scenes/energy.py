@@ -13,7 +13,7 @@ from yade_rbsm.voronoi import voronoi_blocks
 p = params()
 rng = random.Random(p.get("seed", 1))
 mat = RbsmMat(young=1e8, poisson=p.get("nu", 0.25), density=2000, planeStrain=True, deformable=p.get("deformable", True), cohesion=1e9, tensileStrength=1e9)
-if "plastic" in p:  # yielding blocks (issue 39; the welded joints use no strength): c, φ, ψ = plastic
+if "plastic" in p:  # yielding blocks (issue 39; the welded joints use no strength unless weldYields): c, φ, ψ = plastic
     mat.plastic, mat.cohesion, mat.frictionAngle, mat.dilatancy = True, p["plastic"][0], p["plastic"][1], p["plastic"][2]
     mat.weldYields = p.get("weldYields", False)  # and the welds slip at the same strength
 O.materials.append(mat)
