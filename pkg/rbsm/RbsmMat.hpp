@@ -35,7 +35,7 @@ public:
 			"Blocks of this material carry a constant strain besides their rigid motion (the seed's eq. 4; :yref:`DeformableState`): their "
 			"elasticity is the block's own (young, poisson, planeStrain), so the joints of two such blocks made at the first step of an "
 			"assembly (:yref:`Ip2_RbsmMat_RbsmMat_RbsmPhys.setCohesionNow`, as the builders do) are *welded* (:yref:`RbsmPhys.welded`: stiff "
-			"elastic springs that neither slip nor break, the cuts of a continuum), while joints made later, broken ones and the builders' "
+			"elastic springs that do not break and slip only with :yref:`weldYields<RbsmMat.weldYields>`, the cuts of a continuum), while joints made later, broken ones and the builders' "
 			"joint sets and traces keep the Mohr-Coulomb law. Rigid blocks (False, default) are Kawai's. Read when a block is built "
 			"(newAssocState) and when a joint is made; needs :yref:`BlockStrainIntegrator` in O.engines (yade_rbsm.engines() adds it when a material is deformable)."))
 		((bool, plastic, false, ,
