@@ -170,6 +170,10 @@ namespace {
 		sum.strength += strength;
 	}
 
+	// A point's Mohr-Coulomb strength per unit area at normal traction sn (its cohesion while intact; an
+	// elastic weld's is infinite): what RbsmPhys.strength sums.
+	inline Real pointStrength(const JointStep& j, bool intact, Real sn) { return (intact ? j.params.cohesion : 0) + std::max<Real>(0, sn) * j.params.tanPhi; }
+
 	// Point k of the rule: the law at the point (rbsm::updateJointPoint) and the viscous damping, added
 	// to the sums. (Inlined early, so that the sums can stay in registers.)
 	template <bool Strain> [[gnu::always_inline]] inline void addPoint(const RbsmGeom& g, RbsmPhys& p, const JointStep& j, int k, JointSums& sum, Real* dashpots)
@@ -198,7 +202,7 @@ namespace {
 			fs += ds;
 			dashpots[2 * k] = dn, dashpots[2 * k + 1] = ds; // (for the energy: dashpotWork)
 		}
-		addToSums<Strain>(g, j, s, fn, fs, r, st.open, ((st.intact ? j.params.cohesion : 0) + std::max<Real>(0, r.normalTraction) * p.tanPhi) * a, sum);
+		addToSums<Strain>(g, j, s, fn, fs, r, st.open, pointStrength(j, st.intact, r.normalTraction) * a, sum);
 	}
 }
 
@@ -295,7 +299,7 @@ namespace {
 			const Real a = w[k] * j.area;
 			if (j.damped) dashpots[2 * k] = toPoint(cn[k], cMean[0]) * a, dashpots[2 * k + 1] = toPoint(cs[k], cMean[1]) * a; // (as applied)
 			addToSums<true>(g, j, g.rule->s[k], (sn + toPoint(cn[k], cMean[0])) * a, (tau + toPoint(cs[k], cMean[1])) * a, r[k], false,
-			          std::numeric_limits<Real>::infinity(), sum); // (welded: unlimited)
+			          pointStrength(j, pts[k].joint.intact, sn) * a, sum);
 		}
 		return sum;
 	}

@@ -181,6 +181,11 @@ O.engines = yade_rbsm.engines(gravity=(0, 0, 0))
 omega.ip2(O).setCohesionNow = True
 O.step()
 out["weld_yields"] = [[O.interactions[i, j].phys.welded, O.interactions[i, j].phys.weldYields] for i, j in pairs]
+# the joint's strength Σ (c + max(σn, 0) tan φ) a_k as the law reports it: finite for a weld that yields
+out["weld_strength"] = [O.interactions[i, j].phys.strength for i, j in pairs[:2]]
+I = O.interactions[pairs[1]]
+out["weld_strength_expected"] = sum((I.phys.cohesion + max(sn, 0) * I.phys.tanPhi) * w * I.geom.length * I.geom.thickness
+                                    for sn, w in zip(I.phys.normalTraction, I.geom.weights))
 O.bodies[a].state.strain = (-0.01, 0, 0)  # far beyond the strength: the next step returns it
 O.bodies[b].state.updateAttrs({"plasticStrain": (1e-4, 0, 0)})
 out["updated"] = list(O.bodies[b].state.plasticStrain)
@@ -225,6 +230,8 @@ def test_setting_and_saving_plastic_blocks(tmp_path):
     assert r["weldYields"] == [True, True, True, False]
     # welded as built; the welds yield only between two plastic materials that both ask for it
     assert r["weld_yields"] == [[True, False], [True, True], [True, False], [True, False]]
+    elastic_weld, yielding_weld = r["weld_strength"]
+    assert elastic_weld == float("inf") and yielding_weld == pytest.approx(r["weld_strength_expected"], rel=1e-12)
     assert r["state_ctor"] == [[1e-3, -1e-3, 0], 2e-3]
     assert "readonly" in r  # yieldMode is the integrator's to set
     mode, shear, eps_p, other, f = r["after"]
