@@ -27,6 +27,7 @@ Every run's energy balance closes (issue 35, item 3): O.energy.total() stays wit
 """
 from math import radians, sin, cos, tan, sqrt
 
+import numpy
 import pytest
 
 from conftest import run_scene
@@ -82,9 +83,7 @@ def test_a_point_runs_out_within_the_point_mass_answers():
     """The runouts of the four blocks (ξ 1, the landing that stops the normal velocity as the lower answer
     assumes) extrapolated linearly to L → 0 lie within the point-mass answers, and shorten with L."""
     x = [runout(L, 1)["runout"] for L in SIZES]
-    mL, mx = sum(SIZES) / len(SIZES), sum(x) / len(x)
-    slope = sum((a - mL) * (b - mx) for a, b in zip(SIZES, x)) / sum((a - mL) ** 2 for a in SIZES)
-    point = mx - slope * mL
+    slope, point = numpy.polyfit(SIZES, x, 1)  # least squares: runout = point + slope L
     print("xi 1: runouts %s m for L %s m: %.4f m at L -> 0 (bounds %.3f..%.3f), %+.3f m per m of L" % (
         ", ".join("%.4f" % v for v in x), ", ".join("%g" % L for L in SIZES), point, LOW, HIGH, slope))
     assert LOW < point < HIGH
